@@ -1,0 +1,48 @@
+// The lexical layer of GLIB: physical lines are joined into logical lines
+// (`\` continuations), comments are dropped, and each logical line is cut into
+// tokens that remember where they stand in the original text. The lexer never
+// reports anything: it records what it saw (e.g. a malformed number) in the
+// token, and the parser decides whether that matters for the command at hand.
+#pragma once
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "lang/diagnostics.h"
+
+namespace glimmer {
+
+struct Token {
+    enum class Kind { Number, Word, Open, Close };
+    enum class NumberIssue {
+        None,
+        Malformed,   // only a prefix of `text` is a number, e.g. "4.8." or "1.."
+        OutOfRange,  // e.g. "1e999"
+    };
+    Kind kind = Kind::Word;
+    std::string text;  // as written; for Open/Close the bracket itself
+    SourceLoc loc;
+    double number = 0;  // Kind::Number
+    NumberIssue issue = NumberIssue::None;
+};
+
+// The piece of one physical line that belongs to a logical line, after the
+// comment, the line ending and a continuation `\` were removed.
+struct Segment {
+    int line = 0;
+    int col = 0;  // of text[0]
+    std::string text;
+};
+
+struct LogicalLine {
+    std::vector<Token> tokens;      // never empty
+    std::vector<Segment> segments;  // lets MessageBox take its text verbatim
+};
+
+// Logical lines that hold at least one token, in order.
+std::vector<LogicalLine> lexScript(std::string_view text);
+
+// The closing bracket of '<', '{' or '['; 0 for anything else.
+char closingBracket(char open);
+
+}  // namespace glimmer
