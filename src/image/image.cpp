@@ -1,0 +1,201 @@
+#include "image/image.h"
+
+#include <stb/stb_image.h>
+#include <stb/stb_image_write.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <fstream>
+#include <memory>
+
+namespace glimmer {
+
+Image Image::rgba8(int w, int h) {
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.type = Type::U8;
+    img.u8.assign(std::size_t(w) * std::size_t(h) * 4, 0);
+    return img;
+}
+
+Image Image::rgbaF32(int w, int h) {
+    Image img;
+    img.width = w;
+    img.height = h;
+    img.type = Type::F32;
+    img.f32.assign(std::size_t(w) * std::size_t(h) * 4, 0.0f);
+    return img;
+}
+
+bool readFileBytes(const std::string& path, std::vector<std::uint8_t>& out, std::string& error) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) {
+        error = "cannot open " + path;
+        return false;
+    }
+    out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    if (in.bad()) {
+        error = "cannot read " + path;
+        return false;
+    }
+    return true;
+}
+
+namespace {
+
+bool startsWith(const std::vector<std::uint8_t>& b, const char* magic, std::size_t n) {
+    return b.size() >= n && std::memcmp(b.data(), magic, n) == 0;
+}
+
+bool endsWith(const std::string& s, const std::string& suffix) {
+    if (s.size() < suffix.size()) return false;
+    return std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(),
+                      [](char a, char b) { return std::tolower((unsigned char)a) == b; });
+}
+
+struct StbFree {
+    void operator()(void* p) const { stbi_image_free(p); }
+};
+
+bool decodeStb(const std::vector<std::uint8_t>& bytes, bool hdr, Image& out, std::string& error) {
+    // stb takes an int length; larger files are not pictures we can use anyway.
+    if (bytes.size() > std::size_t(0x7fffffff)) {
+        error = "image file too large";
+        return false;
+    }
+    int w = 0, h = 0, n = 0;
+    const auto* data = bytes.data();
+    const int len = int(bytes.size());
+    if (hdr) {
+        std::unique_ptr<float, StbFree> px(stbi_loadf_from_memory(data, len, &w, &h, &n, 4));
+        if (!px) {
+            error = std::string("cannot decode image: ") + stbi_failure_reason();
+            return false;
+        }
+        out = Image::rgbaF32(w, h);
+        std::memcpy(out.f32.data(), px.get(), out.f32.size() * sizeof(float));
+    } else {
+        std::unique_ptr<stbi_uc, StbFree> px(stbi_load_from_memory(data, len, &w, &h, &n, 4));
+        if (!px) {
+            error = std::string("cannot decode image: ") + stbi_failure_reason();
+            return false;
+        }
+        out = Image::rgba8(w, h);
+        std::memcpy(out.u8.data(), px.get(), out.u8.size());
+    }
+    return true;
+}
+
+}  // namespace
+
+bool loadImage(const std::string& path, Image& out, std::string& error) {
+    std::vector<std::uint8_t> bytes;
+    if (!readFileBytes(path, bytes, error)) return false;
+    bool ok = false;
+    if (startsWith(bytes, "BM", 2)) {
+        ok = decodeBmp(bytes, out, error);
+    } else if (startsWith(bytes, "#?RADIANCE", 10) || startsWith(bytes, "#?RGBE", 6)) {
+        ok = decodeStb(bytes, true, out, error);
+    } else if (startsWith(bytes, "\x89PNG", 4) || startsWith(bytes, "\xff\xd8\xff", 3)) {
+        ok = decodeStb(bytes, false, out, error);
+    } else if (endsWith(path, ".tex")) {
+        ok = decodeTex2D(bytes, out, error);
+    } else if (endsWith(path, ".hdr")) {
+        ok = decodeStb(bytes, true, out, error);
+    } else {
+        // Let stb try the formats it knows that we do not sniff (TGA, GIF, ...).
+        ok = decodeStb(bytes, false, out, error);
+    }
+    if (!ok) error = path + ": " + error;
+    return ok;
+}
+
+bool writePng(const std::string& path, const Image& img, std::string& error) {
+    if (img.type != Image::Type::U8) {
+        error = "writePng needs an 8-bit image; " + path + " would be float";
+        return false;
+    }
+    if (img.empty() || img.u8.size() != std::size_t(img.width) * img.height * 4) {
+        error = "writePng: empty or inconsistent image";
+        return false;
+    }
+    if (!stbi_write_png(path.c_str(), img.width, img.height, 4, img.u8.data(), img.width * 4)) {
+        error = "cannot write " + path;
+        return false;
+    }
+    return true;
+}
+
+std::vector<std::uint8_t> encodeBmp(const Image& img) {
+    const std::size_t texels = std::size_t(std::max(img.width, 0)) * std::size_t(std::max(img.height, 0));
+    const std::size_t have = img.type == Image::Type::U8 ? img.u8.size() : img.f32.size();
+    if (img.empty() || have != texels * 4) return {};  // nothing sane to encode
+    const std::uint32_t w = std::uint32_t(img.width);
+    const std::uint32_t h = std::uint32_t(img.height);
+    const std::uint32_t stride = (w * 3 + 3) & ~3u;
+    const std::uint32_t pixelBytes = stride * h;
+    const std::uint32_t offset = 14 + 40;
+    std::vector<std::uint8_t> b(offset + pixelBytes, 0);
+    auto put16 = [&](std::size_t at, std::uint32_t v) {
+        b[at] = std::uint8_t(v);
+        b[at + 1] = std::uint8_t(v >> 8);
+    };
+    auto put32 = [&](std::size_t at, std::uint32_t v) {
+        put16(at, v);
+        put16(at + 2, v >> 16);
+    };
+    b[0] = 'B';
+    b[1] = 'M';
+    put32(2, std::uint32_t(b.size()));
+    put32(10, offset);
+    put32(14, 40);
+    put32(18, w);
+    put32(22, h);  // positive: bottom-up, the form every reader accepts
+    put16(26, 1);
+    put16(28, 24);
+    put32(30, 0);  // BI_RGB
+    put32(34, pixelBytes);
+    put32(38, 2835);  // 72 dpi, so viewers show a sane physical size
+    put32(42, 2835);
+    for (std::uint32_t y = 0; y < h; ++y) {
+        std::uint8_t* row = b.data() + offset + std::size_t(h - 1 - y) * stride;
+        for (std::uint32_t x = 0; x < w; ++x) {
+            const std::size_t i = (std::size_t(y) * w + x) * 4;
+            std::uint8_t r, g, bl;
+            if (img.type == Image::Type::U8) {
+                r = img.u8[i], g = img.u8[i + 1], bl = img.u8[i + 2];
+            } else {
+                auto q = [](float f) {
+                    return std::uint8_t(std::clamp(f, 0.0f, 1.0f) * 255.0f + 0.5f);
+                };
+                r = q(img.f32[i]), g = q(img.f32[i + 1]), bl = q(img.f32[i + 2]);
+            }
+            row[x * 3] = bl;
+            row[x * 3 + 1] = g;
+            row[x * 3 + 2] = r;
+        }
+    }
+    return b;
+}
+
+bool writeBmp(const std::string& path, const Image& img, std::string& error) {
+    if (img.type != Image::Type::U8) {
+        error = "writeBmp needs an 8-bit image; " + path + " would be float";
+        return false;
+    }
+    const auto bytes = encodeBmp(img);
+    if (bytes.empty()) {
+        error = "writeBmp: empty or inconsistent image";
+        return false;
+    }
+    std::ofstream f(path, std::ios::binary);
+    if (!f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()))) {
+        error = "cannot write " + path;
+        return false;
+    }
+    return true;
+}
+
+}  // namespace glimmer
