@@ -1,0 +1,40 @@
+// The subcommands of the glimmer program. Each returns the process's exit
+// code: 0 success, 1 script or shader errors, 2 usage errors.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "backends/context.h"
+
+namespace CLI {
+class App;
+}
+
+namespace glimmer {
+
+enum ExitCode { kExitOk = 0, kExitScriptError = 1, kExitUsage = 2 };
+
+struct CommonOptions {
+    std::string script;
+    std::string backend = "auto";
+    std::vector<std::string> includeDirs;
+    std::vector<std::string> sets;  // name=value
+    std::string size;               // WxH
+};
+
+struct RenderOptions : CommonOptions {
+    std::string output = "out.png";
+    std::vector<std::string> dumps;  // UNIT=file.png
+    double time = 0;
+    bool timings = false;
+};
+
+void addRenderCommand(CLI::App& app, RenderOptions& options);
+void addCheckCommand(CLI::App& app, CommonOptions& options);
+int runRender(const RenderOptions& options);
+int runCheck(const CommonOptions& options);
+
+// "512x512" -> 512, 512. False on anything else.
+bool parseSize(const std::string& text, int& w, int& h);
+
+}  // namespace glimmer

@@ -1,0 +1,46 @@
+#include <charconv>
+
+#include <CLI/CLI.hpp>
+
+#include "app/commands.h"
+
+namespace glimmer {
+
+bool parseSize(const std::string& text, int& w, int& h) {
+    auto x = text.find_first_of("xX");
+    if (x == std::string::npos) return false;
+    auto num = [](const std::string& s, int& v) {
+        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        return ec == std::errc() && end == s.data() + s.size() && v >= 1 && v <= 16384;
+    };
+    return num(text.substr(0, x), w) && num(text.substr(x + 1), h);
+}
+
+namespace {
+
+void addCommon(CLI::App* sub, CommonOptions& o) {
+    sub->add_option("script", o.script, "the .glib script")->required();
+    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless")
+        ->check(CLI::IsMember({"auto", "osmesa", "egl", "egl-device", "egl-surfaceless"}));
+    sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
+    sub->add_option("--set", o.sets, "NAME=VALUE for a uniform range or checkbox (repeatable)");
+    sub->add_option("--size", o.size, "output size WxH (default: WindowSize, else 600x600)");
+}
+
+}  // namespace
+
+void addRenderCommand(CLI::App& app, RenderOptions& o) {
+    CLI::App* sub = app.add_subcommand("render", "render a script headless to a PNG");
+    addCommon(sub, o);
+    sub->add_option("-o,--output", o.output, "the PNG to write");
+    sub->add_option("--dump", o.dumps, "UNIT=FILE.png: also write the texture on that unit (repeatable)");
+    sub->add_option("--time", o.time, "seconds since start, for the Timer uniform");
+    sub->add_flag("--timings", o.timings, "print start-up, compile, render and write times");
+}
+
+void addCheckCommand(CLI::App& app, CommonOptions& o) {
+    CLI::App* sub = app.add_subcommand("check", "parse, load, compile and link a script; draw nothing");
+    addCommon(sub, o);
+}
+
+}  // namespace glimmer

@@ -1,0 +1,27 @@
+// The steps every front end shares: read a script, parse it, plan it; and
+// print what was found along the way.
+#pragma once
+#include <iosfwd>
+#include <string>
+
+#include "lang/diagnostics.h"
+#include "lang/script.h"
+#include "plan/plan.h"
+
+namespace glimmer {
+
+struct LoadedScript {
+    Script script;
+    Plan plan;
+    SourceTexts sources;  // the script's text, and shader texts once compiled
+};
+
+// Reads and parses `path` and builds its plan. False when the file cannot be
+// read; the plan may still carry errors (check diags).
+bool loadScript(const std::string& path, const PlanOptions& options, Diagnostics& diags, LoadedScript& out);
+
+// Prints every diagnostic, clang style, then a summary line when there were
+// any errors or warnings.
+void printDiagnostics(const Diagnostics& diags, const SourceTexts& sources, std::ostream& out);
+
+}  // namespace glimmer

@@ -1,0 +1,65 @@
+#include "app/session.h"
+
+#include <chrono>
+#include <iostream>
+
+#include <fmt/format.h>
+
+namespace glimmer {
+
+std::optional<int> openSession(const CommonOptions& options, const std::set<int>& keepUnits, bool everything,
+                               Session& s) {
+    using Clock = std::chrono::steady_clock;
+    Diagnostics diags;
+    PlanOptions planOptions;
+    planOptions.includeDirs = options.includeDirs;
+    planOptions.keepTargets = keepUnits;
+    if (!options.size.empty() && !parseSize(options.size, planOptions.width, planOptions.height)) {
+        std::cerr << fmt::format("glimmer: error: --size '{}' is not WIDTHxHEIGHT (1 to 16384 each)\n", options.size);
+        return kExitUsage;
+    }
+    BackendChoice backend;
+    if (!parseBackend(options.backend, backend)) {
+        std::cerr << fmt::format("glimmer: error: unknown backend '{}'\n", options.backend);
+        return kExitUsage;
+    }
+    if (!loadScript(options.script, planOptions, diags, s.loaded)) {
+        printDiagnostics(diags, s.loaded.sources, std::cerr);
+        return kExitUsage;
+    }
+    // --set is checked before any GL work: a typo should not cost a compile.
+    s.values.emplace(s.loaded.plan);
+    Diagnostics setDiags;
+    bool setsOk = true;
+    for (const auto& a : options.sets) setsOk &= s.values->applySet(s.loaded.plan, a, setDiags);
+    if (diags.hasErrors() || !setsOk) {
+        printDiagnostics(diags, s.loaded.sources, std::cerr);
+        printDiagnostics(setDiags, s.loaded.sources, std::cerr);
+        return diags.hasErrors() ? kExitScriptError : kExitUsage;
+    }
+
+    auto t0 = Clock::now();
+    std::string why;
+    s.context = createContext(backend, why);
+    if (!s.context) {
+        printDiagnostics(diags, s.loaded.sources, std::cerr);
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+    s.renderer = Renderer::create([&](const char* n) { return s.context->getProcAddress(n); }, why);
+    if (!s.renderer) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+    auto t1 = Clock::now();
+    bool ok = s.renderer->prepare(s.loaded.plan, diags, s.loaded.sources, everything);
+    auto t2 = Clock::now();
+    s.startupMs = std::chrono::duration<double, std::milli>(t1 - t0).count();
+    s.compileMs = std::chrono::duration<double, std::milli>(t2 - t1).count();
+    printDiagnostics(diags, s.loaded.sources, std::cerr);
+    printDiagnostics(setDiags, s.loaded.sources, std::cerr);
+    if (!ok) return kExitScriptError;
+    return std::nullopt;
+}
+
+}  // namespace glimmer

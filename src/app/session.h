@@ -1,0 +1,29 @@
+// A script loaded, planned and prepared on a GL context: what `render` and
+// `check` both start from.
+#pragma once
+#include <memory>
+#include <optional>
+#include <set>
+
+#include "app/commands.h"
+#include "app/pipeline.h"
+#include "backends/context.h"
+#include "gl/renderer.h"
+#include "plan/uniform_values.h"
+
+namespace glimmer {
+
+struct Session {
+    LoadedScript loaded;
+    std::unique_ptr<GlContext> context;
+    std::unique_ptr<Renderer> renderer;
+    std::optional<UniformValues> values;
+    double startupMs = 0, compileMs = 0;  // context + GL table; loading + compiling
+};
+
+// Runs every step up to a prepared renderer, printing diagnostics to stderr.
+// Returns an exit code when it cannot go on, nullopt when the session is ready.
+std::optional<int> openSession(const CommonOptions& options, const std::set<int>& keepUnits, bool everything,
+                               Session& s);
+
+}  // namespace glimmer

@@ -1,0 +1,33 @@
+// A backend makes an OpenGL context current and says how to find GL entry
+// points. It draws nothing: the renderer does, the same way on every backend.
+#pragma once
+#include <memory>
+#include <string>
+
+#include "gl/gl_api.h"
+
+namespace glimmer {
+
+class GlContext {
+public:
+    virtual ~GlContext() = default;
+    virtual void* getProcAddress(const char* name) = 0;
+    virtual std::string name() const = 0;  // "osmesa", "egl-device", "egl-surfaceless", "glfw"
+};
+
+enum class BackendChoice { Auto, OsMesa, Egl, EglDevice, EglSurfaceless };
+
+// Parses "auto", "osmesa", "egl", "egl-device", "egl-surfaceless".
+bool parseBackend(const std::string& text, BackendChoice& out);
+
+std::unique_ptr<GlContext> createOsMesaContext(std::string& error);
+// A GPU through EGL_EXT_platform_device; software devices are skipped.
+std::unique_ptr<GlContext> createEglDeviceContext(std::string& error);
+// Mesa's surfaceless platform (llvmpipe on a machine without a GPU).
+std::unique_ptr<GlContext> createEglSurfacelessContext(std::string& error);
+
+// auto: a GPU through EGL, else OSMesa, else EGL surfaceless. egl: device,
+// else surfaceless. `error` collects why each refused.
+std::unique_ptr<GlContext> createContext(BackendChoice choice, std::string& error);
+
+}  // namespace glimmer

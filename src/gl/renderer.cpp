@@ -1,0 +1,401 @@
+#include "gl/renderer.h"
+
+#include <chrono>
+#include <cmath>
+
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "geometry/mesh.h"
+#include "gl/shader_build.h"
+
+namespace glimmer {
+
+struct Renderer::Target {
+    std::vector<int> textures;  // empty: the screen
+    unsigned fbo = 0;
+    unsigned depth = 0;         // renderbuffer, only when some pass draws depth into it
+    int width = 0, height = 0;
+};
+
+struct Renderer::Program {
+    unsigned id = 0;
+    std::vector<ActiveUniform> uniforms;
+    int timerLocation = -1;
+    bool usesTangent = false;
+};
+
+struct Renderer::MeshBuffers {
+    unsigned vbo = 0, ibo = 0;
+    GLsizei count = 0;
+    GLenum primitive = GL_TRIANGLES;
+};
+
+namespace {
+
+Image flipRows(Image img) {
+    size_t row = size_t(img.width) * 4;
+    for (int y = 0; y < img.height / 2; ++y) {
+        auto a = img.u8.begin() + std::ptrdiff_t(size_t(y) * row);
+        auto b = img.u8.begin() + std::ptrdiff_t(size_t(img.height - 1 - y) * row);
+        std::swap_ranges(a, a + std::ptrdiff_t(row), b);
+    }
+    return img;
+}
+
+// Every texture is sampled the same way: linear, and OpenGL's default wrap.
+void textureParameters(const GlApi& gl) {
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
+    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+}
+
+bool makeMesh(const MeshDecl& m, Mesh& mesh, std::string& error) {
+    const auto& p = m.params;
+    auto i = [&](size_t k) { return int(std::lround(p[k])); };
+    switch (m.shape) {
+    case CommandKind::QuadXY: mesh = makeQuadXY(float(p[0]), float(p[1]), i(2), i(3)); return true;
+    case CommandKind::QuadXZ: mesh = makeQuadXZ(float(p[0]), float(p[1]), i(2), i(3)); return true;
+    case CommandKind::QuadYZ: mesh = makeQuadYZ(float(p[0]), float(p[1]), i(2), i(3)); return true;
+    case CommandKind::Sphere: mesh = makeSphere(float(p[0]), std::max(i(1), 3), std::max(i(2), 2)); return true;
+    case CommandKind::Torus: mesh = makeTorus(float(p[0]), float(p[1]), std::max(i(2), 3), std::max(i(3), 3)); return true;
+    case CommandKind::Box: mesh = makeBox(float(p[0]), float(p[1]), float(p[2])); return true;
+    case CommandKind::Obj: return loadObj(m.path, mesh, error);
+    default: error = "no mesh for this command"; return false;
+    }
+}
+
+}  // namespace
+
+std::unique_ptr<Renderer> Renderer::create(const GetProcAddress& getProc, std::string& error) {
+    std::unique_ptr<Renderer> r(new Renderer());
+    if (!loadGlApi(r->gl_, getProc, error)) return nullptr;
+    return r;
+}
+
+Renderer::~Renderer() { releaseAll(); }
+
+std::string Renderer::rendererName() const {
+    const GLubyte* s = gl_.GetString(GL_RENDERER);
+    return s ? reinterpret_cast<const char*>(s) : "unknown";
+}
+
+void Renderer::releaseAll() {
+    for (unsigned& t : textures_)
+        if (t) gl_.DeleteTextures(1, &t);
+    textures_.clear();
+    for (auto& m : meshes_) {
+        if (!m) continue;
+        gl_.DeleteBuffers(1, &m->vbo);
+        gl_.DeleteBuffers(1, &m->ibo);
+    }
+    meshes_.clear();
+    for (auto& p : programs_)
+        if (p && p->id) gl_.DeleteProgram(p->id);
+    programs_.clear();
+    auto freeTarget = [&](Target* t) {
+        if (!t) return;
+        if (t->fbo) gl_.DeleteFramebuffers(1, &t->fbo);
+        if (t->depth) gl_.DeleteRenderbuffers(1, &t->depth);
+    };
+    for (auto& t : targets_) freeTarget(t.get());
+    targets_.clear();
+    freeTarget(screen_.get());
+    screen_.reset();
+    if (screenTexture_) gl_.DeleteTextures(1, &screenTexture_);
+    screenTexture_ = 0;
+    plan_ = nullptr;
+}
+
+bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& sources, bool everything) {
+    releaseAll();
+    plan_ = &plan;
+    const std::string& file = plan.scriptFile;
+    textures_.assign(plan.textures.size(), 0);
+    meshes_.resize(plan.meshes.size());
+    programs_.resize(plan.programs.size());
+
+    // What the passes that will run actually use.
+    std::vector<bool> texUsed(plan.textures.size(), everything), meshUsed(plan.meshes.size(), everything),
+        progUsed(plan.programs.size(), everything);
+    for (const auto& pass : plan.passes) {
+        if (!pass.needed && !everything) continue;
+        for (int t : pass.targets) texUsed[t] = true;
+        for (int t : pass.reads) texUsed[t] = true;
+        for (const auto& s : pass.steps) {
+            if (s.kind != Step::Kind::Draw) continue;
+            meshUsed[s.draw.mesh] = true;
+            if (s.draw.program >= 0) progUsed[s.draw.program] = true;
+        }
+    }
+
+    int errorsBefore = diags.errorCount();
+    for (size_t i = 0; i < plan.textures.size(); ++i) {
+        if (!texUsed[i]) continue;
+        const TextureDecl& t = plan.textures[i];
+        Image img;
+        if (t.source == TextureDecl::Source::File) {
+            std::string why;
+            if (!loadImage(t.path, img, why)) {
+                diags.error(file, t.loc, fmt::format("cannot load '{}': {}", t.shown, why));
+                continue;
+            }
+        }
+        unsigned id = 0;
+        gl_.GenTextures(1, &id);
+        gl_.BindTexture(GL_TEXTURE_2D, id);
+        textureParameters(gl_);
+        gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        if (t.source == TextureDecl::Source::File) {
+            // Image rows run top-down; OpenGL's t = 0 is the bottom row.
+            if (img.type == Image::Type::U8) {
+                Image up = flipRows(img);
+                gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, up.u8.data());
+            } else {
+                std::vector<float> up(img.f32.size());
+                size_t row = size_t(img.width) * 4;
+                for (int y = 0; y < img.height; ++y)
+                    std::copy_n(img.f32.begin() + std::ptrdiff_t(size_t(y) * row), row,
+                                up.begin() + std::ptrdiff_t(size_t(img.height - 1 - y) * row));
+                gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, img.width, img.height, 0, GL_RGBA, GL_FLOAT, up.data());
+            }
+        } else {
+            // Start targets black rather than with whatever memory held.
+            std::vector<std::uint8_t> zeros(size_t(t.width) * size_t(t.height) * 4, 0);
+            gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, zeros.data());
+        }
+        textures_[i] = id;
+    }
+
+    for (size_t i = 0; i < plan.meshes.size(); ++i) {
+        if (!meshUsed[i]) continue;
+        Mesh mesh;
+        std::string why;
+        if (!makeMesh(plan.meshes[i], mesh, why)) {
+            diags.error(file, plan.meshes[i].loc, why);
+            continue;
+        }
+        auto b = std::make_unique<MeshBuffers>();
+        gl_.GenBuffers(1, &b->vbo);
+        gl_.BindBuffer(GL_ARRAY_BUFFER, b->vbo);
+        gl_.BufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(MeshVertex)), mesh.vertices.data(),
+                       GL_STATIC_DRAW);
+        gl_.GenBuffers(1, &b->ibo);
+        gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b->ibo);
+        gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
+                       mesh.indices.data(), GL_STATIC_DRAW);
+        b->count = GLsizei(mesh.indices.size());
+        b->primitive = mesh.primitive == Mesh::Primitive::Lines    ? GL_LINES
+                       : mesh.primitive == Mesh::Primitive::Points ? GL_POINTS
+                                                                   : GL_TRIANGLES;
+        meshes_[i] = std::move(b);
+    }
+    gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+
+    for (size_t i = 0; i < plan.programs.size(); ++i) {
+        if (!progUsed[i]) continue;
+        const ProgramDecl& decl = plan.programs[i];
+        unsigned id = buildProgram(gl_, decl, file, diags, sources);
+        if (!id) continue;
+        auto p = std::make_unique<Program>();
+        p->id = id;
+        p->uniforms = activeUniforms(gl_, id);
+        p->timerLocation = gl_.GetUniformLocation(id, "Timer");
+        p->usesTangent = gl_.GetAttribLocation(id, "Tangent") == kTangentLocation;
+        checkUniformSettings(decl, p->uniforms, file, diags);
+        programs_[i] = std::move(p);
+    }
+
+    // Targets: one framebuffer per distinct set of textures written at once.
+    for (const auto& pass : plan.passes) {
+        if (pass.targets.empty() || (!pass.needed && !everything)) continue;
+        bool known = false;
+        for (const auto& t : targets_) known |= t->textures == pass.targets;
+        if (known) continue;
+        auto t = std::make_unique<Target>();
+        t->textures = pass.targets;
+        const TextureDecl& first = plan.textures[pass.targets.front()];
+        t->width = first.width;
+        t->height = first.height;
+        bool depth = false;
+        for (int tex : pass.targets) depth |= plan.textures[tex].needsDepth;
+        gl_.GenFramebuffers(1, &t->fbo);
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+        for (size_t k = 0; k < pass.targets.size(); ++k)
+            gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + k), GL_TEXTURE_2D,
+                                     textures_[pass.targets[k]], 0);
+        if (depth) {
+            gl_.GenRenderbuffers(1, &t->depth);
+            gl_.BindRenderbuffer(GL_RENDERBUFFER, t->depth);
+            gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, t->width, t->height);
+            gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t->depth);
+        }
+        if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            diags.error(file, pass.loc, "the driver cannot render into these textures");
+        targets_.push_back(std::move(t));
+    }
+
+    // The screen is an offscreen framebuffer of the output size, so every
+    // backend reads back the same way.
+    screen_ = std::make_unique<Target>();
+    screen_->width = plan.width;
+    screen_->height = plan.height;
+    bool screenDepth = false;
+    for (const auto& pass : plan.passes)
+        if (pass.targets.empty()) screenDepth |= pass.needsDepth;
+    gl_.GenTextures(1, &screenTexture_);
+    gl_.BindTexture(GL_TEXTURE_2D, screenTexture_);
+    textureParameters(gl_);
+    gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, plan.width, plan.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl_.GenFramebuffers(1, &screen_->fbo);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, screen_->fbo);
+    gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, screenTexture_, 0);
+    if (screenDepth) {
+        gl_.GenRenderbuffers(1, &screen_->depth);
+        gl_.BindRenderbuffer(GL_RENDERBUFFER, screen_->depth);
+        gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, plan.width, plan.height);
+        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, screen_->depth);
+    }
+    if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        diags.error(file, {}, fmt::format("the driver cannot make a {}x{} screen", plan.width, plan.height));
+    gl_.ClearColor(0, 0, 0, 1);
+    gl_.Clear(GL_COLOR_BUFFER_BIT);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl_.BindTexture(GL_TEXTURE_2D, 0);
+
+    if (GLenum e = gl_.GetError(); e != GL_NO_ERROR)
+        diags.error(file, {}, fmt::format("OpenGL error 0x{:04x} while loading the script", e));
+    return diags.errorCount() == errorsBefore;
+}
+
+void Renderer::render(const UniformValues& values, double time, std::vector<PassTiming>* timings) {
+    if (!plan_ || !screen_) return;
+    using Clock = std::chrono::steady_clock;
+    for (size_t pi = 0; pi < plan_->passes.size(); ++pi) {
+        const Pass& pass = plan_->passes[pi];
+        if (!pass.needed) continue;
+        Target* target = screen_.get();
+        for (auto& t : targets_)
+            if (t->textures == pass.targets) target = t.get();
+        if (timings) gl_.Finish();
+        auto start = Clock::now();
+
+        gl_.BindFramebuffer(GL_FRAMEBUFFER, target->fbo);
+        std::vector<GLenum> buffers;
+        for (size_t k = 0; k < std::max<size_t>(1, pass.targets.size()); ++k) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + k));
+        gl_.DrawBuffers(GLsizei(buffers.size()), buffers.data());
+        gl_.Viewport(0, 0, target->width, target->height);
+        if (pass.needsDepth && target->depth) {
+            gl_.Enable(GL_DEPTH_TEST);
+            gl_.DepthFunc(GL_LESS);
+            // Depth from an earlier frame would hide this one's drawing.
+            gl_.Clear(GL_DEPTH_BUFFER_BIT);
+        } else {
+            gl_.Disable(GL_DEPTH_TEST);
+        }
+        for (const auto& s : pass.steps) {
+            if (s.kind == Step::Kind::Clear) {
+                gl_.ClearColor(s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a);
+                gl_.Clear(GL_COLOR_BUFFER_BIT | (target->depth ? GL_DEPTH_BUFFER_BIT : 0));
+            } else {
+                drawStep(s.draw, values, time);
+            }
+        }
+        if (timings) {
+            gl_.Finish();
+            timings->push_back({int(pi), std::chrono::duration<double, std::milli>(Clock::now() - start).count()});
+        }
+    }
+    gl_.UseProgram(0);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void Renderer::drawStep(const Draw& d, const UniformValues& values, double time) {
+    const MeshBuffers* mesh = meshes_[d.mesh].get();
+    if (!mesh) return;
+    const Program* prog = d.program >= 0 ? programs_[d.program].get() : nullptr;
+    if (d.program >= 0 && !prog) return;  // it failed to build; already reported
+
+    // The legacy matrix stacks feed gl_ModelViewProjectionMatrix and friends.
+    gl_.MatrixMode(GL_PROJECTION);
+    gl_.LoadMatrixf(glm::value_ptr(d.projection));
+    gl_.MatrixMode(GL_MODELVIEW);
+    gl_.LoadMatrixf(glm::value_ptr(d.modelView));
+    gl_.Color4f(d.color.r, d.color.g, d.color.b, d.color.a);
+    gl_.LineWidth(d.lineWidth);
+    gl_.PointSize(d.pointSize);
+    gl_.ShadeModel(d.flatShading ? GL_FLAT : GL_SMOOTH);
+
+    for (const auto& [unit, tex] : d.units) {
+        gl_.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+        gl_.BindTexture(GL_TEXTURE_2D, textures_[tex]);
+    }
+    gl_.ActiveTexture(GL_TEXTURE0);
+
+    gl_.UseProgram(prog ? prog->id : 0);
+    if (prog) {
+        for (const auto& u : prog->uniforms) {
+            const auto& v = values.get(d.program, u.name);
+            if (!v.empty()) uploadUniform(gl_, u, v);
+        }
+        if (prog->timerLocation >= 0) {
+            double t = std::fmod(time / plan_->timerPeriod, 1.0);
+            gl_.Uniform1f(prog->timerLocation, float(t < 0 ? t + 1 : t));
+        }
+    }
+
+    const GLsizei stride = sizeof(MeshVertex);
+    gl_.BindBuffer(GL_ARRAY_BUFFER, mesh->vbo);
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh->ibo);
+    gl_.EnableClientState(GL_VERTEX_ARRAY);
+    gl_.VertexPointer(3, GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, position)));
+    gl_.EnableClientState(GL_NORMAL_ARRAY);
+    gl_.NormalPointer(GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
+    gl_.ClientActiveTexture(GL_TEXTURE0);
+    gl_.EnableClientState(GL_TEXTURE_COORD_ARRAY);
+    gl_.TexCoordPointer(2, GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, st)));
+    if (prog && prog->usesTangent) {
+        gl_.EnableVertexAttribArray(kTangentLocation);
+        gl_.VertexAttribPointer(kTangentLocation, 3, GL_FLOAT, GL_FALSE, stride,
+                                reinterpret_cast<void*>(offsetof(MeshVertex, tangent)));
+    }
+    gl_.DrawElements(mesh->primitive, mesh->count, GL_UNSIGNED_INT, nullptr);
+    if (prog && prog->usesTangent) gl_.DisableVertexAttribArray(kTangentLocation);
+    gl_.DisableClientState(GL_TEXTURE_COORD_ARRAY);
+    gl_.DisableClientState(GL_NORMAL_ARRAY);
+    gl_.DisableClientState(GL_VERTEX_ARRAY);
+    gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
+    gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+Image Renderer::readScreen() const {
+    if (!screen_) return {};
+    Image img = Image::rgba8(screen_->width, screen_->height);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, screen_->fbo);
+    gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.ReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    return flipRows(std::move(img));
+}
+
+Image Renderer::readTexture(int texture) const {
+    if (!plan_ || texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)]) return {};
+    GLint w = 0, h = 0;
+    gl_.BindTexture(GL_TEXTURE_2D, textures_[size_t(texture)]);
+    // GetTexLevelParameteriv is not in the table; the plan knows the size of
+    // targets, and loaded images are read at the size they were uploaded.
+    const TextureDecl& t = plan_->textures[size_t(texture)];
+    w = t.width;
+    h = t.height;
+    if (w <= 0 || h <= 0) return {};
+    Image img = Image::rgba8(w, h);
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_.GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
+    gl_.BindTexture(GL_TEXTURE_2D, 0);
+    return flipRows(std::move(img));
+}
+
+}  // namespace glimmer

@@ -1,0 +1,69 @@
+// The one place that issues GL calls for a script. Every front end (render,
+// check, view, bench) drives a Renderer; every backend only hands it a
+// function that finds GL entry points. It owns every GL object it makes.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "gl/gl_api.h"
+#include "gl/uniform_upload.h"
+#include "image/image.h"
+#include "lang/diagnostics.h"
+#include "plan/plan.h"
+#include "plan/uniform_values.h"
+
+namespace glimmer {
+
+struct PassTiming {
+    int pass = -1;      // index into Plan::passes
+    double ms = 0;      // wall clock around the pass, with glFinish on each side
+};
+
+class Renderer {
+public:
+    // Loads the GL table through `getProc`; null and `error` when the driver
+    // lacks what Glimmer needs. The context must be current.
+    static std::unique_ptr<Renderer> create(const GetProcAddress& getProc, std::string& error);
+    ~Renderer();
+    Renderer(const Renderer&) = delete;
+    Renderer& operator=(const Renderer&) = delete;
+
+    const GlApi& gl() const { return gl_; }
+    std::string rendererName() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+
+    // Loads images and meshes, compiles and links programs, makes targets.
+    // Only what the needed passes use, unless `everything` (for `check`).
+    // Returns false when diags got errors; the renderer then draws nothing.
+    bool prepare(const Plan& plan, Diagnostics& diags, SourceTexts& sources, bool everything = false);
+
+    // Draws every needed pass with these uniform values. `time` (seconds)
+    // drives the built-in Timer uniform. With `timings`, each pass is timed.
+    void render(const UniformValues& values, double time, std::vector<PassTiming>* timings = nullptr);
+
+    // The screen, row 0 at the top. RGBA8.
+    Image readScreen() const;
+    // A texture of the plan (a render target or a loaded image), row 0 at the
+    // top; empty if it was never made because nothing needed it.
+    Image readTexture(int texture) const;
+
+private:
+    Renderer() = default;
+    struct Target;
+    struct Program;
+    struct MeshBuffers;
+    void releaseAll();
+    unsigned targetFramebuffer(const std::vector<int>& textures, bool depth, int& w, int& h);
+    void drawStep(const Draw& d, const UniformValues& values, double time);
+
+    GlApi gl_{};
+    const Plan* plan_ = nullptr;
+    std::vector<unsigned> textures_;       // per TextureDecl; 0 = not made
+    std::vector<std::unique_ptr<MeshBuffers>> meshes_;
+    std::vector<std::unique_ptr<Program>> programs_;
+    std::vector<std::unique_ptr<Target>> targets_;
+    std::unique_ptr<Target> screen_;
+    unsigned screenTexture_ = 0;
+};
+
+}  // namespace glimmer

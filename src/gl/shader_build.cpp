@@ -1,0 +1,172 @@
+#include "gl/shader_build.h"
+
+#include <algorithm>
+#include <cstring>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include <fmt/format.h>
+
+namespace glimmer {
+
+const char* const kGstapPrelude =
+    "#define uModelViewMatrix gl_ModelViewMatrix\n"
+    "#define uProjectionMatrix gl_ProjectionMatrix\n"
+    "#define uModelViewProjectionMatrix gl_ModelViewProjectionMatrix\n"
+    "#define uNormalMatrix gl_NormalMatrix\n"
+    "#define uModelViewMatrixInverse gl_ModelViewMatrixInverse\n"
+    "#define aVertex gl_Vertex\n"
+    "#define aNormal gl_Normal\n"
+    "#define aColor gl_Color\n"
+    "#define aTexCoord0 gl_MultiTexCoord0\n"
+    "#define aTexCoord1 gl_MultiTexCoord1\n"
+    "#define aTexCoord2 gl_MultiTexCoord2\n"
+    "#define aTexCoord3 gl_MultiTexCoord3\n"
+    "#define aTexCoord4 gl_MultiTexCoord4\n"
+    "#define aTexCoord5 gl_MultiTexCoord5\n"
+    "#define aTexCoord6 gl_MultiTexCoord6\n"
+    "#define aTexCoord7 gl_MultiTexCoord7\n";
+
+int PreparedSource::originalLine(int compiledLine) const {
+    if (compiledLine <= insertedAfter) return compiledLine;
+    if (compiledLine <= insertedAfter + insertedLines) return insertedAfter;  // inside the prelude
+    return compiledLine - insertedLines;
+}
+
+PreparedSource prepareSource(const std::string& source, const std::string& prelude) {
+    PreparedSource out;
+    if (prelude.empty()) {
+        out.text = source;
+        return out;
+    }
+    // #version must stay the first thing the compiler sees, so the prelude
+    // goes after it. Line numbers are mapped back rather than fixed with
+    // #line, whose meaning changed between GLSL versions.
+    std::istringstream in(source);
+    std::string line;
+    int n = 0, versionLine = 0;
+    while (std::getline(in, line)) {
+        ++n;
+        auto p = line.find_first_not_of(" \t");
+        if (p != std::string::npos && line.compare(p, 8, "#version") == 0) {
+            versionLine = n;
+            break;
+        }
+    }
+    out.insertedAfter = versionLine;
+    for (char ch : prelude) out.insertedLines += ch == '\n';
+    size_t cut = 0;
+    for (int i = 0; i < versionLine; ++i) cut = source.find('\n', cut) + 1;
+    if (versionLine > 0 && cut == 0) {  // #version on the last line without a newline
+        out.text = source + "\n" + prelude;
+        return out;
+    }
+    out.text = source.substr(0, cut) + prelude + source.substr(cut);
+    return out;
+}
+
+void mapCompilerLog(const std::string& log, const PreparedSource& src, const std::string& file,
+                    const std::string& fallbackFile, SourceLoc fallback, Severity defaultSeverity,
+                    Diagnostics& diags) {
+    static const std::regex mesa(R"(^\s*\d+:(\d+)\((\d+)\):\s*(error|warning)\s*:?\s*(.*)$)");
+    static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(error|warning)\s+\w+:\s*(.*)$)");
+    std::istringstream in(log);
+    std::string line, unmatched;
+    while (std::getline(in, line)) {
+        if (!line.empty() && line.back() == '\r') line.pop_back();
+        std::smatch m;
+        Diagnostic d;
+        d.file = file;
+        if (std::regex_match(line, m, mesa)) {
+            d.loc = {src.originalLine(std::stoi(m[1])), std::stoi(m[2])};
+            d.severity = m[3] == "error" ? Severity::Error : Severity::Warning;
+            d.message = m[4];
+        } else if (std::regex_match(line, m, nvidia)) {
+            d.loc = {src.originalLine(std::stoi(m[1])), 0};
+            d.severity = m[2] == "error" ? Severity::Error : Severity::Warning;
+            d.message = m[3];
+        } else {
+            if (line.find_first_not_of(" \t") != std::string::npos) unmatched += (unmatched.empty() ? "" : "\n") + line;
+            continue;
+        }
+        diags.add(d);
+    }
+    if (!unmatched.empty()) diags.add({defaultSeverity, fallbackFile, fallback, unmatched});
+}
+
+namespace {
+
+GLenum stageEnum(ShaderStage::Kind k) {
+    switch (k) {
+    case ShaderStage::Kind::Vertex: return GL_VERTEX_SHADER;
+    case ShaderStage::Kind::Fragment: return GL_FRAGMENT_SHADER;
+    case ShaderStage::Kind::Geometry: return GL_GEOMETRY_SHADER;
+    case ShaderStage::Kind::TessControl: return GL_TESS_CONTROL_SHADER;
+    case ShaderStage::Kind::TessEvaluation: return GL_TESS_EVALUATION_SHADER;
+    }
+    return GL_VERTEX_SHADER;
+}
+
+std::string infoLog(const GlApi& gl, unsigned object, bool isProgram) {
+    GLint length = 0;
+    if (isProgram) gl.GetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
+    else gl.GetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(size_t(std::max(length, 1)), '\0');
+    if (isProgram) gl.GetProgramInfoLog(object, length, nullptr, log.data());
+    else gl.GetShaderInfoLog(object, length, nullptr, log.data());
+    log.resize(std::strlen(log.c_str()));
+    return log;
+}
+
+}  // namespace
+
+unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl, const std::string& scriptFile,
+                      Diagnostics& diags, SourceTexts& sources) {
+    std::vector<unsigned> shaders;
+    bool ok = true;
+    for (const auto& stage : decl.stages) {
+        std::ifstream f(stage.path, std::ios::binary);
+        if (!f) {
+            diags.error(scriptFile, stage.loc, fmt::format("cannot read shader '{}'", stage.shown));
+            ok = false;
+            continue;
+        }
+        std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+        sources.add(stage.path, text);
+        PreparedSource src = prepareSource(text, decl.gstap ? kGstapPrelude : "");
+        unsigned sh = gl.CreateShader(stageEnum(stage.kind));
+        const char* p = src.text.c_str();
+        gl.ShaderSource(sh, 1, &p, nullptr);
+        gl.CompileShader(sh);
+        GLint status = 0;
+        gl.GetShaderiv(sh, GL_COMPILE_STATUS, &status);
+        std::string log = infoLog(gl, sh, false);
+        if (!log.empty())
+            mapCompilerLog(log, src, stage.path, scriptFile, stage.loc, status ? Severity::Warning : Severity::Error, diags);
+        if (!status) {
+            if (log.empty()) diags.error(stage.path, {}, "the shader did not compile, and the driver said nothing");
+            ok = false;
+        }
+        shaders.push_back(sh);
+    }
+    unsigned program = 0;
+    if (ok && !shaders.empty()) {
+        program = gl.CreateProgram();
+        for (unsigned sh : shaders) gl.AttachShader(program, sh);
+        gl.BindAttribLocation(program, kTangentLocation, "Tangent");
+        gl.LinkProgram(program);
+        GLint status = 0;
+        gl.GetProgramiv(program, GL_LINK_STATUS, &status);
+        if (!status) {
+            std::string log = infoLog(gl, program, true);
+            diags.error(scriptFile, decl.loc, fmt::format("Program {} does not link: {}", decl.name, log));
+            gl.DeleteProgram(program);
+            program = 0;
+        }
+    }
+    for (unsigned sh : shaders) gl.DeleteShader(sh);
+    return program;
+}
+
+}  // namespace glimmer

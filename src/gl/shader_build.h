@@ -1,0 +1,42 @@
+// Compiling and linking a Program's shaders, with compiler messages mapped
+// back to the shader file and line the user wrote.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gl/gl_api.h"
+#include "lang/diagnostics.h"
+#include "plan/plan.h"
+
+namespace glimmer {
+
+// glman's GSTAP: new-style names for the old built-ins, put after #version.
+extern const char* const kGstapPrelude;
+
+// The shader text as compiled: `prelude` inserted after the #version line
+// (or at the top). `insertedAfter` is the line it went after (0 = top) and
+// `insertedLines` how many lines it holds, so log lines map back.
+struct PreparedSource {
+    std::string text;
+    int insertedAfter = 0;
+    int insertedLines = 0;
+    int originalLine(int compiledLine) const;
+};
+PreparedSource prepareSource(const std::string& source, const std::string& prelude);
+
+// Turns a driver's info log (Mesa "0:12(5): error: ..." or NVIDIA
+// "0(12) : error C1008: ...") into diagnostics against `file`. Lines that
+// match neither form are kept as one message at `fallback`.
+void mapCompilerLog(const std::string& log, const PreparedSource& src, const std::string& file,
+                    const std::string& fallbackFile, SourceLoc fallback, Severity defaultSeverity,
+                    Diagnostics& diags);
+
+// Reads, compiles and links every stage of `decl`. Returns the program
+// (0 on failure, with diagnostics). Shader texts are added to `sources`.
+unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl, const std::string& scriptFile,
+                      Diagnostics& diags, SourceTexts& sources);
+
+// The attribute location glman's `Tangent` is bound to before linking.
+constexpr int kTangentLocation = 7;
+
+}  // namespace glimmer

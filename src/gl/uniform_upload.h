@@ -1,0 +1,35 @@
+// Giving a Program's uniforms their values. The type comes from the shader's
+// declaration, not from how the script wrote the number: `<0 3 3>` may feed
+// a float and `<1. 28 128.>` an int.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "gl/gl_api.h"
+#include "lang/diagnostics.h"
+#include "plan/plan.h"
+
+namespace glimmer {
+
+struct ActiveUniform {
+    std::string name;  // without a trailing "[0]"
+    GLenum type = 0;
+    GLint size = 1;    // array length
+    GLint location = -1;
+};
+
+std::vector<ActiveUniform> activeUniforms(const GlApi& gl, unsigned program);
+
+// Warns about settings the shaders do not use and forms that do not fit the
+// declared type; nothing here stops the script.
+void checkUniformSettings(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
+                          const std::string& scriptFile, Diagnostics& diags);
+
+// Converts `values` to the uniform's declared type and uploads it to the
+// program in use. Missing components are 0 (alpha 1 for a colour is filled
+// in by the plan).
+void uploadUniform(const GlApi& gl, const ActiveUniform& u, const std::vector<double>& values);
+
+bool isSamplerType(GLenum type);
+
+}  // namespace glimmer

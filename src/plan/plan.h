@@ -1,0 +1,132 @@
+// The plan: a parsed script resolved into what the renderer needs. Files are
+// found, uniforms typed by their written form, matrices computed, and the
+// script cut into passes that say which target each writes and which
+// textures it reads. Still no OpenGL: the plan can be built and tested
+// without a context.
+#pragma once
+#include <map>
+#include <set>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "lang/diagnostics.h"
+#include "lang/script.h"
+
+namespace glimmer {
+
+// One name-value pair of a Program line, as written. Its GL type is only
+// known after the shader is linked; the renderer converts then.
+struct UniformSetting {
+    enum class Form {
+        Range,     // <min current max>: a slider
+        Bool,      // <true> <false> <0> <1>: a checkbox
+        Color,     // {r g b [a]}: a colour button
+        Array,     // [a b c ...]: a vector or array constant
+        Constant,  // a bare number, most often a sampler's texture unit
+    };
+    std::string name;
+    SourceLoc loc;
+    Form form = Form::Constant;
+    std::vector<double> values;  // Range: {current}; Bool: {0|1}; Color: rgba; Array/Constant: as written
+    double min = 0, max = 0;     // Range only
+};
+
+struct ShaderStage {
+    enum class Kind { Vertex, Fragment, Geometry, TessControl, TessEvaluation };
+    Kind kind = Kind::Vertex;
+    std::string path;  // resolved, openable
+    std::string shown; // as the script wrote it, for messages
+    SourceLoc loc;     // of the command that named it
+};
+
+struct ProgramDecl {
+    std::string name;
+    SourceLoc loc;
+    std::vector<ShaderStage> stages;
+    std::vector<UniformSetting> uniforms;
+    bool gstap = false;  // GSTAP was given before this Program
+};
+
+struct TextureDecl {
+    enum class Source { File, Empty };
+    Source source = Source::Empty;
+    std::string path;   // resolved (File)
+    std::string shown;  // as written (File)
+    int width = 0, height = 0;  // Empty: as written; File: filled in when loaded
+    SourceLoc loc;
+    bool renderTarget = false;  // some pass writes it
+    bool needsDepth = false;    // some pass writing it draws depth that matters
+};
+
+struct MeshDecl {
+    CommandKind shape = CommandKind::QuadXY;
+    std::vector<double> params;  // the command's numbers, defaults filled in
+    std::string path;            // Obj
+    SourceLoc loc;
+    bool operator<(const MeshDecl& o) const {
+        return std::tie(shape, params, path) < std::tie(o.shape, o.params, o.path);
+    }
+};
+
+struct Draw {
+    int mesh = -1;
+    int program = -1;  // -1: fixed function
+    glm::mat4 projection{1.f};
+    glm::mat4 modelView{1.f};
+    glm::vec4 color{1.f};
+    std::map<int, int> units;  // texture unit -> texture, as bound when the draw was written
+    float lineWidth = 1.f, pointSize = 1.f;
+    bool flatShading = false;
+    SourceLoc loc;
+};
+
+struct Step {
+    enum class Kind { Clear, Draw };
+    Kind kind = Kind::Clear;
+    glm::vec4 clearColor{0.f};
+    Draw draw;
+};
+
+// Everything drawn between two target changes.
+struct Pass {
+    std::vector<int> targets;  // textures written (colour attachments in order); empty: the screen
+    SourceLoc loc;             // where the target was chosen (or the first step)
+    std::vector<Step> steps;
+    std::set<int> reads;       // textures its draws may sample
+    bool needsDepth = false;
+    bool needed = true;        // false: nothing downstream reads what it writes
+};
+
+struct Plan {
+    std::string scriptFile;
+    int width = 600, height = 600;  // the screen: --size, else WindowSize, else glman's 600x600
+    double timerPeriod = 10.0;
+    std::vector<ProgramDecl> programs;
+    std::vector<TextureDecl> textures;
+    std::vector<MeshDecl> meshes;
+    std::vector<Pass> passes;
+    std::map<int, int> finalUnits;  // texture unit -> texture bound there when the script ends
+
+    bool screenNeeded() const;
+};
+
+struct PlanOptions {
+    int width = 0, height = 0;             // 0: from the script
+    std::vector<std::string> includeDirs;  // -I
+    std::set<int> keepTargets;             // texture units the user wants to see (--dump): never dropped
+};
+
+// Resolves and checks a parsed script. Problems go to `diags`; the plan is
+// usable (renders what it can) unless diags has errors.
+Plan buildPlan(const Script& script, const PlanOptions& options, Diagnostics& diags);
+
+// Finds `name` as glman would: absolute, else the script's folder, else the
+// project folders ../shaders and ../textures beside it, else each -I folder.
+// Empty when not found; `tried` lists where it looked.
+std::string resolveFile(const std::string& scriptFile, const std::string& name,
+                        const std::vector<std::string>& includeDirs, std::vector<std::string>* tried);
+
+}  // namespace glimmer

@@ -1,0 +1,30 @@
+#include <filesystem>
+
+#include "plan/plan.h"
+
+namespace fs = std::filesystem;
+
+namespace glimmer {
+
+std::string resolveFile(const std::string& scriptFile, const std::string& name,
+                        const std::vector<std::string>& includeDirs, std::vector<std::string>* tried) {
+    fs::path p(name);
+    if (p.is_absolute()) {
+        if (tried) tried->push_back(p.parent_path().string());
+        return fs::is_regular_file(p) ? p.string() : std::string();
+    }
+    fs::path scriptDir = fs::path(scriptFile).parent_path();
+    // The seed scripts name "superblur.vert" and "grid.bmp" bare; the project
+    // keeps shaders and textures in folders of their own beside scripts/.
+    std::vector<fs::path> dirs = {scriptDir, scriptDir / ".." / "shaders", scriptDir / ".." / "textures"};
+    for (const auto& d : includeDirs) dirs.emplace_back(d);
+    for (const auto& d : dirs) {
+        fs::path candidate = d / p;
+        if (tried) tried->push_back(d.empty() ? std::string(".") : d.lexically_normal().string());
+        std::error_code ec;
+        if (fs::is_regular_file(candidate, ec)) return candidate.lexically_normal().string();
+    }
+    return {};
+}
+
+}  // namespace glimmer

@@ -1,0 +1,36 @@
+// The values uniforms have now: the script's, then --set, then sliders.
+// Kept apart from the plan so a reload or a slider move touches only this.
+#pragma once
+#include <map>
+#include <string>
+#include <vector>
+
+#include "plan/plan.h"
+
+namespace glimmer {
+
+struct UniformKey {
+    int program;
+    std::string name;
+    bool operator<(const UniformKey& o) const { return std::tie(program, name) < std::tie(o.program, o.name); }
+};
+
+class UniformValues {
+public:
+    explicit UniformValues(const Plan& plan);
+
+    const std::vector<double>& get(int program, const std::string& name) const;
+    const std::map<UniformKey, std::vector<double>>& all() const { return values_; }
+
+    // "name=value": sets every Range or Bool uniform of that name. A value
+    // outside a range is an error naming the range; an unknown name a warning.
+    // Returns false on error.
+    bool applySet(const Plan& plan, const std::string& assignment, Diagnostics& diags);
+
+    void set(int program, const std::string& name, std::vector<double> v) { values_[{program, name}] = std::move(v); }
+
+private:
+    std::map<UniformKey, std::vector<double>> values_;
+};
+
+}  // namespace glimmer
