@@ -82,8 +82,8 @@ std::string Renderer::rendererName() const {
 }
 
 void Renderer::releaseAll() {
-    for (unsigned& t : textures_)
-        if (t) gl_.DeleteTextures(1, &t);
+    for (auto& t : textures_)
+        if (t.id) gl_.DeleteTextures(1, &t.id);
     textures_.clear();
     for (auto& m : meshes_) {
         if (!m) continue;
@@ -112,7 +112,7 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
     releaseAll();
     plan_ = &plan;
     const std::string& file = plan.scriptFile;
-    textures_.assign(plan.textures.size(), 0);
+    textures_.assign(plan.textures.size(), {});
     meshes_.resize(plan.meshes.size());
     programs_.resize(plan.programs.size());
 
@@ -165,7 +165,7 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
             std::vector<std::uint8_t> zeros(size_t(t.width) * size_t(t.height) * 4, 0);
             gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, zeros.data());
         }
-        textures_[i] = id;
+        textures_[i] = {id, img.empty() ? t.width : img.width, img.empty() ? t.height : img.height};
     }
 
     for (size_t i = 0; i < plan.meshes.size(); ++i) {
@@ -225,7 +225,7 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
         gl_.BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
         for (size_t k = 0; k < pass.targets.size(); ++k)
             gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + k), GL_TEXTURE_2D,
-                                     textures_[pass.targets[k]], 0);
+                                     textures_[pass.targets[k]].id, 0);
         if (depth) {
             gl_.GenRenderbuffers(1, &t->depth);
             gl_.BindRenderbuffer(GL_RENDERBUFFER, t->depth);
@@ -330,7 +330,7 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time)
 
     for (const auto& [unit, tex] : d.units) {
         gl_.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        gl_.BindTexture(GL_TEXTURE_2D, textures_[tex]);
+        gl_.BindTexture(GL_TEXTURE_2D, textures_[tex].id);
     }
     gl_.ActiveTexture(GL_TEXTURE0);
 
@@ -382,16 +382,10 @@ Image Renderer::readScreen() const {
 }
 
 Image Renderer::readTexture(int texture) const {
-    if (!plan_ || texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)]) return {};
-    GLint w = 0, h = 0;
-    gl_.BindTexture(GL_TEXTURE_2D, textures_[size_t(texture)]);
-    // GetTexLevelParameteriv is not in the table; the plan knows the size of
-    // targets, and loaded images are read at the size they were uploaded.
-    const TextureDecl& t = plan_->textures[size_t(texture)];
-    w = t.width;
-    h = t.height;
-    if (w <= 0 || h <= 0) return {};
-    Image img = Image::rgba8(w, h);
+    if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
+    const TextureObject& t = textures_[size_t(texture)];
+    Image img = Image::rgba8(t.width, t.height);
+    gl_.BindTexture(GL_TEXTURE_2D, t.id);
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
     gl_.GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
     gl_.BindTexture(GL_TEXTURE_2D, 0);

@@ -58,7 +58,11 @@ private:
 
     GlApi gl_{};
     const Plan* plan_ = nullptr;
-    std::vector<unsigned> textures_;       // per TextureDecl; 0 = not made
+    struct TextureObject {
+        unsigned id = 0;  // 0: not made, nothing needed it
+        int width = 0, height = 0;
+    };
+    std::vector<TextureObject> textures_;  // per TextureDecl
     std::vector<std::unique_ptr<MeshBuffers>> meshes_;
     std::vector<std::unique_ptr<Program>> programs_;
     std::vector<std::unique_ptr<Target>> targets_;

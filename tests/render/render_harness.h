@@ -1,0 +1,104 @@
+// Runs a script through the real pipeline (parse, plan, backend, renderer)
+// and hands back pixels, for tests that compare them with a CPU reference.
+#pragma once
+#include <cstdlib>
+#include <map>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "app/pipeline.h"
+#include "backends/context.h"
+#include "gl/renderer.h"
+#include "image/image.h"
+#include "plan/uniform_values.h"
+
+namespace glimmer::testing {
+
+struct Rendered {
+    bool ok = false;
+    std::string error;  // why not ok: the diagnostics, printed
+    Image screen;
+    std::map<int, Image> units;  // texture unit -> its texture when the script ended
+};
+
+// The backends the render tests run on: GLIMMER_TEST_BACKENDS (comma list),
+// else both CPU backends. A GPU machine sets it to "egl-device".
+inline std::vector<std::string> testBackends() {
+    const char* env = std::getenv("GLIMMER_TEST_BACKENDS");
+    std::string list = env && *env ? env : "osmesa,egl-surfaceless";
+    std::vector<std::string> out;
+    std::stringstream ss(list);
+    for (std::string b; std::getline(ss, b, ',');)
+        if (!b.empty()) out.push_back(b);
+    return out;
+}
+
+inline Rendered renderScript(const std::string& backendName, const std::string& script,
+                             const std::vector<std::string>& sets, const std::vector<int>& readUnits,
+                             PlanOptions options = {}) {
+    Rendered r;
+    Diagnostics diags;
+    LoadedScript loaded;
+    for (int u : readUnits) options.keepTargets.insert(u);
+    options.includeDirs.push_back(std::string(GLIMMER_SOURCE_DIR) + "/shaders");
+    auto fail = [&](const std::string& why) {
+        std::ostringstream out;
+        printDiagnostics(diags, loaded.sources, out);
+        r.error = why + "\n" + out.str();
+        return r;
+    };
+    if (!loadScript(script, options, diags, loaded) || diags.hasErrors()) return fail("script did not load");
+    UniformValues values(loaded.plan);
+    for (const auto& s : sets)
+        if (!values.applySet(loaded.plan, s, diags)) return fail("--set " + s);
+
+    BackendChoice choice;
+    if (!parseBackend(backendName, choice)) return fail("unknown backend " + backendName);
+    std::string why;
+    auto context = createContext(choice, why);
+    if (!context) return fail(why);
+    auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
+    if (!renderer) return fail(why);
+    if (!renderer->prepare(loaded.plan, diags, loaded.sources)) return fail("prepare failed");
+    renderer->render(values, 0.0);
+    r.screen = renderer->readScreen();
+    for (int u : readUnits) {
+        auto it = loaded.plan.finalUnits.find(u);
+        if (it != loaded.plan.finalUnits.end()) r.units[u] = renderer->readTexture(it->second);
+    }
+    r.ok = true;
+    return r;
+}
+
+// Largest per-channel difference (RGB) in 8-bit steps, and where.
+struct Difference {
+    int maxSteps = 0;
+    int x = -1, y = -1;
+    long pixelsOver1 = 0;
+};
+
+inline Difference compareRgb(const Image& a, const Image& b) {
+    Difference d;
+    if (a.width != b.width || a.height != b.height) {
+        d.maxSteps = 256;
+        return d;
+    }
+    for (int y = 0; y < a.height; ++y) {
+        for (int x = 0; x < a.width; ++x) {
+            size_t i = (size_t(y) * size_t(a.width) + size_t(x)) * 4;
+            int worst = 0;
+            for (size_t c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.u8[i + c]) - int(b.u8[i + c])));
+            if (worst > 1) ++d.pixelsOver1;
+            if (worst > d.maxSteps) {
+                d.maxSteps = worst;
+                d.x = x;
+                d.y = y;
+            }
+        }
+    }
+    return d;
+}
+
+}  // namespace glimmer::testing
