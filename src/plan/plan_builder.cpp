@@ -104,11 +104,12 @@ private:
     }
 
     Pass& pass() { return plan_.passes.back(); }
-    std::pair<int, int> passSize() const {
-        const Pass& p = plan_.passes.back();
-        if (p.targets.empty()) return {plan_.width, plan_.height};
-        const TextureDecl& t = plan_.textures[p.targets.front()];
-        return {t.width, t.height};
+    // The aspect ratio the projection keeps. Only the screen is widened, as
+    // glman's window reshape does; a quad drawn to cover a texture target
+    // must cover it exactly, whatever the texture's shape.
+    std::pair<int, int> aspectSize() const {
+        if (plan_.passes.back().targets.empty()) return {plan_.width, plan_.height};
+        return {1, 1};
     }
 
     void command(const Command& c) {
@@ -340,17 +341,19 @@ private:
                 return;
             }
             const TextureDecl& t = plan_.textures[it->second];
+            // An image's size is only known once it is loaded, so this check
+            // comes before the size check, which would otherwise misreport it.
+            if (t.source == TextureDecl::Source::File) {
+                diags_.error(file(), a.loc, fmt::format("unit {} holds the image '{}'; render into an empty "
+                                                        "texture made with Texture2D {} width height", unit, t.shown, unit));
+                return;
+            }
             if (!p.targets.empty()) {
                 const TextureDecl& first = plan_.textures[p.targets.front()];
                 if (t.width != first.width || t.height != first.height) {
                     diags_.error(file(), a.loc, "all textures rendered into at once must have the same size");
                     return;
                 }
-            }
-            if (t.source == TextureDecl::Source::File) {
-                diags_.error(file(), a.loc, fmt::format("unit {} holds the image '{}'; render into an empty "
-                                                        "texture made with Texture2D {} width height", unit, t.shown, unit));
-                return;
             }
             p.targets.push_back(it->second);
         }
@@ -419,7 +422,7 @@ private:
         auto [it, added] = meshIndex_.try_emplace(m, int(plan_.meshes.size()));
         if (added) plan_.meshes.push_back(m);
 
-        auto [w, h] = passSize();
+        auto [w, h] = aspectSize();
         Step s;
         s.kind = Step::Kind::Draw;
         Draw& d = s.draw;
