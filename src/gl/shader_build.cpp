@@ -69,7 +69,8 @@ PreparedSource prepareSource(const std::string& source, const std::string& prelu
 void mapCompilerLog(const std::string& log, const PreparedSource& src, const std::string& file,
                     const std::string& fallbackFile, SourceLoc fallback, Severity defaultSeverity,
                     Diagnostics& diags) {
-    static const std::regex mesa(R"(^\s*\d+:(\d+)\((\d+)\):\s*(error|warning)\s*:?\s*(.*)$)");
+    // Mesa's preprocessor (glcpp) writes "0:3(1): preprocessor error: ...".
+    static const std::regex mesa(R"(^\s*\d+:(\d+)\((\d+)\):\s*(?:preprocessor\s+)?(error|warning)\s*:?\s*(.*)$)");
     static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(error|warning)\s+\w+:\s*(.*)$)");
     std::istringstream in(log);
     std::string line, unmatched;
