@@ -25,7 +25,7 @@ namespace glimmer {
     X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexParameteri) X(GetTexImage)       \
     X(ActiveTexture) X(ClientActiveTexture)                                                              \
     X(EnableClientState) X(DisableClientState) X(VertexPointer) X(NormalPointer) X(TexCoordPointer)     \
-    X(DrawElements) X(DrawArrays)                                                                        \
+    X(DrawElements) X(DrawArrays) X(Begin) X(End) X(TexCoord2f) X(Vertex2f)                             \
     X(GenBuffers) X(DeleteBuffers) X(BindBuffer) X(BufferData)                                           \
     X(GetAttribLocation) X(BindAttribLocation) X(VertexAttribPointer) X(EnableVertexAttribArray) X(DisableVertexAttribArray)  \
     X(CreateShader) X(DeleteShader) X(ShaderSource) X(CompileShader) X(GetShaderiv) X(GetShaderInfoLog) \
