@@ -1,6 +1,7 @@
 // glimmer: run GLIB scripts. `glimmer render` draws a script headless to a
 // PNG; `glimmer check` finds every problem without drawing.
 #include <iostream>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -14,6 +15,12 @@ int main(int argc, char** argv) {
     CommonOptions check;
     addRenderCommand(app, render);
     addCheckCommand(app, check);
+    // CLI11 reports a mistyped command as "A subcommand is required"; name it.
+    if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "render" && std::string(argv[1]) != "check") {
+        std::cerr << "glimmer: error: unknown command '" << argv[1] << "'; the commands are 'render' and 'check'\n"
+                  << "Run with --help for more information.\n";
+        return kExitUsage;
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::ParseError& e) {

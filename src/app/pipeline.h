@@ -20,8 +20,8 @@ struct LoadedScript {
 // read; the plan may still carry errors (check diags).
 bool loadScript(const std::string& path, const PlanOptions& options, Diagnostics& diags, LoadedScript& out);
 
-// Prints every diagnostic, clang style, then a summary line when there were
-// any errors or warnings.
+// Prints every diagnostic, clang style, then a summary line ("1 error,
+// 6 warnings") when there were errors.
 void printDiagnostics(const Diagnostics& diags, const SourceTexts& sources, std::ostream& out);
 
 }  // namespace glimmer

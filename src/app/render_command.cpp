@@ -40,6 +40,13 @@ int runRender(const RenderOptions& o) {
     }
     Session s;
     if (auto code = openSession(o, keep, false, s)) return *code;
+    // A unit with nothing on it is a typo: say so before drawing or writing anything.
+    for (const auto& d : dumps) {
+        if (!s.loaded.plan.finalUnits.count(d.unit)) {
+            std::cerr << fmt::format("glimmer: error: --dump {}: no texture on unit {}\n", d.unit, d.unit);
+            return kExitUsage;
+        }
+    }
 
     auto t0 = Clock::now();
     s.renderer->render(*s.values, o.time);

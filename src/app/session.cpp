@@ -32,10 +32,12 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
     Diagnostics setDiags;
     bool setsOk = true;
     for (const auto& a : options.sets) setsOk &= s.values->applySet(s.loaded.plan, a, setDiags);
-    if (diags.hasErrors() || !setsOk) {
+    // One list, so that the summary line counts everything printed above it.
+    bool scriptOk = !diags.hasErrors();
+    for (const auto& d : setDiags.all()) diags.add(d);
+    if (!scriptOk || !setsOk) {
         printDiagnostics(diags, s.loaded.sources, std::cerr);
-        printDiagnostics(setDiags, s.loaded.sources, std::cerr);
-        return diags.hasErrors() ? kExitScriptError : kExitUsage;
+        return scriptOk ? kExitUsage : kExitScriptError;
     }
 
     auto t0 = Clock::now();
@@ -48,6 +50,7 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
     }
     s.renderer = Renderer::create([&](const char* n) { return s.context->getProcAddress(n); }, why);
     if (!s.renderer) {
+        printDiagnostics(diags, s.loaded.sources, std::cerr);
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;
     }
@@ -57,7 +60,6 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
     s.startupMs = std::chrono::duration<double, std::milli>(t1 - t0).count();
     s.compileMs = std::chrono::duration<double, std::milli>(t2 - t1).count();
     printDiagnostics(diags, s.loaded.sources, std::cerr);
-    printDiagnostics(setDiags, s.loaded.sources, std::cerr);
     if (!ok) return kExitScriptError;
     return std::nullopt;
 }

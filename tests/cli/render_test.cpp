@@ -1,0 +1,152 @@
+// `glimmer render` and `glimmer check` on the seed bloom script, and --set.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "cli/run_glimmer.h"
+
+namespace glimmer_cli {
+namespace {
+namespace fs = std::filesystem;
+
+const char* const kDegenerateOrtho =
+    "scripts/bloom.glib:2:1: warning: degenerate Ortho -1. -1. 1. 1. (left == right): OpenGL rejects it and keeps "
+    "the current projection, Ortho -3 3 -3 3\n"
+    "Ortho -1. -1. 1. 1.\n"
+    "^\n";
+
+std::string ownLine(int line, const std::string& uniform, const std::string& program, int programLine,
+                    const std::string& source) {
+    return "scripts/bloom.glib:" + std::to_string(line) + ":5: warning: uniform '" + uniform +
+           "' is on a line of its own; taken as part of Program '" + program + "' (line " +
+           std::to_string(programLine) + "); glman needs a '\\' at the end of the previous line\n" + source +
+           "\n    ^\n";
+}
+
+const std::string kOwnLines[5] = {
+    ownLine(13, "uHalfSize", "SuperBlur", 12, "    uHalfSize <0 0 11>"),
+    ownLine(14, "ImageUnit", "SuperBlur", 12, "    ImageUnit 5"),
+    ownLine(27, "BlurUnit", "Bloom", 26, "    BlurUnit 6"),
+    ownLine(28, "ImageUnit", "Bloom", 26, "    ImageUnit 7"),
+    ownLine(29, "uAdd", "Bloom", 26, "    uAdd <0. 0. 4.00>"),
+};
+
+TEST(CliRender, BloomWritesA64x64PngAndWarnsAboutTheSeedQuirks) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "64x64", "--set",
+                         "uAdd=2", "--set", "uHalfSize=3", "--backend", "osmesa"});
+    ASSERT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    unsigned w = 0, h = 0;
+    ASSERT_TRUE(readPngSize(dir.file("x.png"), w, h)) << r.err;
+    EXPECT_EQ(w, 64u);
+    EXPECT_EQ(h, 64u);
+    EXPECT_EQ(countOf(r.err, kDegenerateOrtho), 1) << r.err;
+    for (const auto& w : kOwnLines) EXPECT_EQ(countOf(r.err, w), 1) << "missing:\n" << w << "in:\n" << r.err;
+    EXPECT_EQ(countOf(r.err, ": warning: "), 6) << r.err;
+    EXPECT_EQ(countOf(r.err, "error"), 0) << r.err;
+    EXPECT_EQ(r.out, "");
+}
+
+TEST(CliRender, SetOutsideTheRangeIsAUsageErrorNamingTheRange) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--set", "uAdd=5", "--backend",
+                         "osmesa"});
+    ASSERT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(countOf(r.err,
+                      "scripts/bloom.glib:29:5: error: --set uAdd=5 is outside the range <0 4> of uniform 'uAdd' in "
+                      "Program Bloom\n"
+                      "    uAdd <0. 0. 4.00>\n"
+                      "    ^\n"),
+              1)
+        << r.err;
+    // One summary that counts everything printed above it.
+    EXPECT_EQ(countOf(r.err, "1 error, 6 warnings\n"), 1) << r.err;
+    EXPECT_EQ(countOf(r.err, " error, 0 warnings"), 0) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+TEST(CliRender, SetWithANonNumberIsAUsageError) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--set", "uAdd=abc", "--backend",
+                         "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(countOf(r.err, "--set: error: 'abc' in --set uAdd=abc is not a number\n"), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+TEST(CliRender, SetWithoutAnEqualsSignIsAUsageError) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--set", "uAdd", "--backend",
+                         "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(countOf(r.err, "--set: error: 'uAdd' is not of the form name=value\n"), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+TEST(CliRender, SetOnAConstantUniformIsAUsageError) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--set", "BlurUnit=1",
+                         "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(countOf(r.err, "scripts/bloom.glib:27:5: error: --set BlurUnit: uniform 'BlurUnit' of Program Bloom is "
+                             "not a range or a checkbox\n"),
+              1)
+        << r.err;
+}
+
+TEST(CliRender, SetOnAnUnknownUniformOnlyWarns) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "16x16", "--set",
+                         "nope=1", "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(countOf(r.err, "--set: warning: no Program sets a uniform named 'nope'\n"), 1) << r.err;
+    unsigned w = 0, h = 0;
+    EXPECT_TRUE(readPngSize(dir.file("x.png"), w, h));
+}
+
+TEST(CliRender, DumpWritesTheBlurTarget) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "64x48", "--dump",
+                         "6=" + dir.file("blur.png"), "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    unsigned w = 0, h = 0;
+    ASSERT_TRUE(readPngSize(dir.file("blur.png"), w, h)) << r.err;
+    EXPECT_EQ(w, 512u);
+    EXPECT_EQ(h, 512u);
+    ASSERT_TRUE(readPngSize(dir.file("x.png"), w, h)) << r.err;
+    EXPECT_EQ(w, 64u);
+    EXPECT_EQ(h, 48u);
+}
+
+TEST(CliRender, DumpOfAUnitWithNoTextureIsAUsageError) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--dump",
+                         "4=" + dir.file("four.png"), "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(countOf(r.err, "glimmer: error: --dump 4: no texture on unit 4\n"), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("four.png")));
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));  // nothing is drawn or written
+}
+
+TEST(CliCheck, BloomChecksCleanAndWritesNothing) {
+    TempDir dir;
+    auto before = fs::exists(fs::path(GLIMMER_SOURCE_DIR) / "out.png");
+    auto r = runGlimmer({"check", "scripts/bloom.glib", "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(countOf(r.err, kDegenerateOrtho), 1) << r.err;
+    EXPECT_EQ(countOf(r.err, "error"), 0) << r.err;
+    EXPECT_EQ(fs::exists(fs::path(GLIMMER_SOURCE_DIR) / "out.png"), before);
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+TEST(CliCheck, CheckTakesNoOutputOption) {
+    TempDir dir;
+    auto r = runGlimmer({"check", "scripts/bloom.glib", "-o", dir.file("x.png"), "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+}  // namespace
+}  // namespace glimmer_cli

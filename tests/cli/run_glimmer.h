@@ -1,0 +1,44 @@
+// Runs the real glimmer program for the end-to-end tests: its exit code,
+// stdout and stderr, with a time limit.
+#pragma once
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace glimmer_cli {
+
+struct RunResult {
+    int exitCode = -1;      // the process's exit status; -1 if it did not exit normally
+    bool timedOut = false;  // killed after the time limit
+    std::string out, err;
+};
+
+// Runs GLIMMER_BIN with `args` in the repository root (so script paths and the
+// file names in diagnostics are relative to it). No shell is involved.
+RunResult runGlimmer(const std::vector<std::string>& args, int timeoutSeconds = 60);
+
+// A fresh, empty folder under the system temp folder, removed at destruction.
+class TempDir {
+public:
+    TempDir();
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const std::filesystem::path& path() const { return path_; }
+    std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+private:
+    std::filesystem::path path_;
+};
+
+// The width and height from a PNG's IHDR chunk; false when the file is not a
+// PNG (wrong signature, or no IHDR first).
+bool readPngSize(const std::string& path, unsigned& width, unsigned& height);
+
+// How many times `needle` occurs in `haystack`.
+int countOf(const std::string& haystack, const std::string& needle);
+
+// Test data scripts, relative to the repository root: "tests/data/cli/NAME".
+std::string cliData(const std::string& name);
+
+}  // namespace glimmer_cli

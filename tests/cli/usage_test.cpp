@@ -1,0 +1,106 @@
+// Bad command lines: exit code 2 and a message that says what is wrong.
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "cli/run_glimmer.h"
+
+namespace glimmer_cli {
+namespace {
+namespace fs = std::filesystem;
+
+TEST(CliUsage, NoSubcommand) {
+    auto r = runGlimmer({});
+    ASSERT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("A subcommand is required"), std::string::npos) << r.err;
+}
+
+TEST(CliUsage, UnknownSubcommandIsNamed) {
+    auto r = runGlimmer({"rendr", "scripts/bloom.glib"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("glimmer: error: unknown command 'rendr'; the commands are 'render' and 'check'"),
+              std::string::npos)
+        << r.err;
+}
+
+TEST(CliUsage, HelpExitsZero) {
+    auto r = runGlimmer({"--help"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("render"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("check"), std::string::npos) << r.out;
+}
+
+TEST(CliUsage, MissingScriptArgument) {
+    auto r = runGlimmer({"render"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("script is required"), std::string::npos) << r.err;
+}
+
+TEST(CliUsage, UnknownOption) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--frobnicate"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("The following argument was not expected: --frobnicate"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+class CliBadSize : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CliBadSize, IsAUsageError) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", GetParam(), "--backend",
+                         "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err, std::string("glimmer: error: --size '") + GetParam() +
+                         "' is not WIDTHxHEIGHT (1 to 16384 each)\n");
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+INSTANTIATE_TEST_SUITE_P(Sizes, CliBadSize,
+                         ::testing::Values("0x5", "abc", "64", "64x", "x64", "64x64x2", "-64x64", "16385x1", "6 4x64"));
+
+TEST(CliUsage, BadSizeOnCheckToo) {
+    auto r = runGlimmer({"check", "scripts/bloom.glib", "--size", "0x5", "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("glimmer: error: --size '0x5' is not WIDTHxHEIGHT"), std::string::npos) << r.err;
+}
+
+TEST(CliUsage, UnknownBackend) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--backend", "nope"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_NE(r.err.find("--backend: nope not in {auto,osmesa,egl,egl-device,egl-surfaceless}"), std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+class CliBadDump : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CliBadDump, IsAUsageError) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--dump", GetParam(),
+                         "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err, std::string("glimmer: error: --dump '") + GetParam() +
+                         "' is not UNIT=FILE.png with a unit from 0 to 31\n");
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+INSTANTIATE_TEST_SUITE_P(Dumps, CliBadDump, ::testing::Values("99=x.png", "32=x.png", "6", "6=", "=x.png", "a=x.png"));
+
+TEST(CliUsage, ScriptThatDoesNotExist) {
+    TempDir dir;
+    for (std::string cmd : {"render", "check"}) {
+        std::vector<std::string> args{cmd, "tests/data/cli/does_not_exist.glib", "--backend", "osmesa"};
+        if (cmd == "render") args.insert(args.end(), {"-o", dir.file("x.png")});
+        auto r = runGlimmer(args);
+        EXPECT_EQ(r.exitCode, 2) << cmd << "\n" << r.err;
+        EXPECT_NE(r.err.find("tests/data/cli/does_not_exist.glib: error: cannot open the script"), std::string::npos)
+            << r.err;
+    }
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+}  // namespace
+}  // namespace glimmer_cli
