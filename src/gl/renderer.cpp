@@ -33,13 +33,20 @@ struct Renderer::MeshBuffers {
 
 namespace {
 
+// Reverses the order of `height` rows of `rowLength` values: images are
+// top row first, OpenGL's rows start at the bottom.
+template <typename T>
+std::vector<T> flipRows(const std::vector<T>& rows, int height) {
+    std::vector<T> out(rows.size());
+    size_t row = height > 0 ? rows.size() / size_t(height) : 0;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(rows.begin() + std::ptrdiff_t(size_t(y) * row), row,
+                    out.begin() + std::ptrdiff_t(size_t(height - 1 - y) * row));
+    return out;
+}
+
 Image flipRows(Image img) {
-    size_t row = size_t(img.width) * 4;
-    for (int y = 0; y < img.height / 2; ++y) {
-        auto a = img.u8.begin() + std::ptrdiff_t(size_t(y) * row);
-        auto b = img.u8.begin() + std::ptrdiff_t(size_t(img.height - 1 - y) * row);
-        std::swap_ranges(a, a + std::ptrdiff_t(row), b);
-    }
+    img.u8 = flipRows(img.u8, img.height);
     return img;
 }
 
@@ -149,17 +156,12 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
         gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
         if (t.source == TextureDecl::Source::File) {
             // Image rows run top-down; OpenGL's t = 0 is the bottom row.
-            if (img.type == Image::Type::U8) {
-                Image up = flipRows(img);
-                gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, up.u8.data());
-            } else {
-                std::vector<float> up(img.f32.size());
-                size_t row = size_t(img.width) * 4;
-                for (int y = 0; y < img.height; ++y)
-                    std::copy_n(img.f32.begin() + std::ptrdiff_t(size_t(y) * row), row,
-                                up.begin() + std::ptrdiff_t(size_t(img.height - 1 - y) * row));
-                gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, img.width, img.height, 0, GL_RGBA, GL_FLOAT, up.data());
-            }
+            if (img.type == Image::Type::U8)
+                gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                               flipRows(img.u8, img.height).data());
+            else
+                gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, img.width, img.height, 0, GL_RGBA, GL_FLOAT,
+                               flipRows(img.f32, img.height).data());
         } else {
             // Start targets black rather than with whatever memory held.
             std::vector<std::uint8_t> zeros(size_t(t.width) * size_t(t.height) * 4, 0);
@@ -226,12 +228,7 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
         for (size_t k = 0; k < pass.targets.size(); ++k)
             gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + k), GL_TEXTURE_2D,
                                      textures_[pass.targets[k]].id, 0);
-        if (depth) {
-            gl_.GenRenderbuffers(1, &t->depth);
-            gl_.BindRenderbuffer(GL_RENDERBUFFER, t->depth);
-            gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, t->width, t->height);
-            gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t->depth);
-        }
+        if (depth) t->depth = attachDepth(t->width, t->height);
         if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
             diags.error(file, pass.loc, "the driver cannot render into these textures");
         targets_.push_back(std::move(t));
@@ -252,12 +249,7 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
     gl_.GenFramebuffers(1, &screen_->fbo);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, screen_->fbo);
     gl_.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, screenTexture_, 0);
-    if (screenDepth) {
-        gl_.GenRenderbuffers(1, &screen_->depth);
-        gl_.BindRenderbuffer(GL_RENDERBUFFER, screen_->depth);
-        gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, plan.width, plan.height);
-        gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, screen_->depth);
-    }
+    if (screenDepth) screen_->depth = attachDepth(plan.width, plan.height);
     if (gl_.CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         diags.error(file, {}, fmt::format("the driver cannot make a {}x{} screen", plan.width, plan.height));
     gl_.ClearColor(0, 0, 0, 1);
@@ -268,6 +260,15 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
     if (GLenum e = gl_.GetError(); e != GL_NO_ERROR)
         diags.error(file, {}, fmt::format("OpenGL error 0x{:04x} while loading the script", e));
     return diags.errorCount() == errorsBefore;
+}
+
+unsigned Renderer::attachDepth(int width, int height) {
+    unsigned rb = 0;
+    gl_.GenRenderbuffers(1, &rb);
+    gl_.BindRenderbuffer(GL_RENDERBUFFER, rb);
+    gl_.RenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    gl_.FramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, rb);
+    return rb;
 }
 
 void Renderer::render(const UniformValues& values, double time, std::vector<PassTiming>* timings) {

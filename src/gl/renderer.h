@@ -53,7 +53,8 @@ private:
     struct Program;
     struct MeshBuffers;
     void releaseAll();
-    unsigned targetFramebuffer(const std::vector<int>& textures, bool depth, int& w, int& h);
+    // A depth renderbuffer of this size, attached to the bound framebuffer.
+    unsigned attachDepth(int width, int height);
     void drawStep(const Draw& d, const UniformValues& values, double time);
 
     GlApi gl_{};
