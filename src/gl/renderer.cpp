@@ -271,12 +271,13 @@ unsigned Renderer::attachDepth(int width, int height) {
     return rb;
 }
 
-void Renderer::render(const UniformValues& values, double time, std::vector<PassTiming>* timings) {
+void Renderer::render(const UniformValues& values, double time, std::vector<PassTiming>* timings,
+                      const std::vector<bool>* only) {
     if (!plan_ || !screen_) return;
     using Clock = std::chrono::steady_clock;
     for (size_t pi = 0; pi < plan_->passes.size(); ++pi) {
         const Pass& pass = plan_->passes[pi];
-        if (!pass.needed) continue;
+        if (!pass.needed || (only && (pi >= only->size() || !(*only)[pi]))) continue;
         Target* target = screen_.get();
         for (auto& t : targets_)
             if (t->textures == pass.targets) target = t.get();
@@ -369,6 +370,35 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time)
     gl_.DisableClientState(GL_VERTEX_ARRAY);
     gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
     gl_.BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+void Renderer::present(int texture, int windowWidth, int windowHeight) const {
+    const Target* source = screen_.get();
+    if (texture >= 0) {
+        source = nullptr;
+        for (const auto& t : targets_)
+            if (t->textures.front() == texture) source = t.get();
+    }
+    if (!source || windowWidth <= 0 || windowHeight <= 0) return;
+    // Fit inside the window keeping the picture's shape.
+    double scale = std::min(double(windowWidth) / source->width, double(windowHeight) / source->height);
+    int w = int(source->width * scale), h = int(source->height * scale);
+    int x = (windowWidth - w) / 2, y = (windowHeight - h) / 2;
+    gl_.BindFramebuffer(GL_READ_FRAMEBUFFER, source->fbo);
+    gl_.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_.BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
+    gl_.BlitFramebuffer(0, 0, source->width, source->height, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+const std::vector<ActiveUniform>* Renderer::activeUniformsOf(int program) const {
+    if (program < 0 || size_t(program) >= programs_.size() || !programs_[size_t(program)]) return nullptr;
+    return &programs_[size_t(program)]->uniforms;
+}
+
+bool Renderer::usesTimer(int program) const {
+    return program >= 0 && size_t(program) < programs_.size() && programs_[size_t(program)] &&
+           programs_[size_t(program)]->timerLocation >= 0;
 }
 
 Image Renderer::readScreen() const {

@@ -37,9 +37,22 @@ public:
     // Returns false when diags got errors; the renderer then draws nothing.
     bool prepare(const Plan& plan, Diagnostics& diags, SourceTexts& sources, bool everything = false);
 
-    // Draws every needed pass with these uniform values. `time` (seconds)
-    // drives the built-in Timer uniform. With `timings`, each pass is timed.
-    void render(const UniformValues& values, double time, std::vector<PassTiming>* timings = nullptr);
+    // Draws every needed pass with these uniform values, or only the passes
+    // flagged in `only` (see plan/dependencies.h); the others keep what they
+    // drew last time. `time` (seconds) drives the built-in Timer uniform.
+    // With `timings`, each pass is timed.
+    void render(const UniformValues& values, double time, std::vector<PassTiming>* timings = nullptr,
+                const std::vector<bool>* only = nullptr);
+
+    // Copies the screen (texture < 0) or a texture target to the window's
+    // framebuffer 0, scaled to fit inside w x h and centred.
+    void present(int texture, int windowWidth, int windowHeight) const;
+
+    // What the linked shaders declare, for sliders of the right kind; null
+    // when the program was not built.
+    const std::vector<ActiveUniform>* activeUniformsOf(int program) const;
+    // Programs that read the built-in Timer uniform must redraw as time runs.
+    bool usesTimer(int program) const;
 
     // The screen, row 0 at the top. RGBA8.
     Image readScreen() const;

@@ -1,0 +1,80 @@
+// Which passes a change re-runs: the seed bloom, and chains built to catch
+// the cases where running too little would leave a stale picture.
+#include <gtest/gtest.h>
+
+#include "plan/dependencies.h"
+#include "plan_test_util.h"
+
+#include <fstream>
+
+using namespace glimmer;
+using namespace glimmer::test;
+
+namespace {
+
+Plan seedBloom() {
+    std::string file = std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib";
+    std::ifstream f(file);
+    std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+    return plan(file, text).plan;
+}
+
+int programNamed(const Plan& p, const std::string& name) {
+    for (size_t i = 0; i < p.programs.size(); ++i)
+        if (p.programs[i].name == name) return int(i);
+    return -1;
+}
+
+TEST(Dependencies, DraggingUAddRerunsOnlyTheComposite) {
+    Plan p = seedBloom();
+    ASSERT_EQ(p.passes.size(), 2u);
+    Change c;
+    c.programs = {programNamed(p, "Bloom")};
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{false, true}));
+}
+
+TEST(Dependencies, ChangingTheBlurRerunsTheBlurAndEverythingDownstream) {
+    Plan p = seedBloom();
+    Change c;
+    c.programs = {programNamed(p, "SuperBlur")};
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true}));
+}
+
+TEST(Dependencies, NoChangeRunsNothing) {
+    Plan p = seedBloom();
+    EXPECT_EQ(passesToRun(p, Change{}), (std::vector<bool>{false, false}));
+}
+
+TEST(Dependencies, EverythingRunsEveryNeededPass) {
+    Plan p = seedBloom();
+    Change c;
+    c.everything = true;
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true}));
+}
+
+TEST(Dependencies, AReloadedImageRerunsItsReaders) {
+    Plan p = seedBloom();
+    Change c;
+    c.textures = {p.finalUnits.at(5)};  // grid.bmp, read by both passes
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true}));
+}
+
+// Two passes draw into the same screen: when the second changes, the first
+// must draw again too, or the second would draw over its own old picture.
+TEST(Dependencies, AllPassesIntoOneTargetRunTogether) {
+    TempProject tp;
+    Planned pl = plan(tp.script(),
+                      "Vertex a.vert\nFragment a.frag\nProgram A\nQuadXY 0 1\n"
+                      "Texture2D 6 8 8\nRenderToTexture 6\nProgram B\nQuadXY 0 1\n"
+                      "RenderToTexture\nProgram C Img 6\nQuadXY 0 1\n");
+    const Plan& p = pl.plan;
+    ASSERT_EQ(p.passes.size(), 3u) << messages(pl.diags).size();
+    Change c;
+    c.programs = {programNamed(p, "C")};
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, false, true}));
+    // B's target feeds C on the screen, and the screen also holds A's quad.
+    c.programs = {programNamed(p, "B")};
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true, true}));
+}
+
+}  // namespace
