@@ -10,7 +10,8 @@ packages=(
   libegl-dev libgl-dev                # EGL backend, GL headers
   libegl-mesa0 libgl1-mesa-dri        # Mesa's EGL vendor and llvmpipe, for EGL surfaceless on a CPU
   libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev
-  libgtest-dev                        # tests
+  libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
+  libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
 )
 # Update the package lists only when a package is missing: a second run
 # should not touch the network.

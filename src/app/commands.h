@@ -31,6 +31,8 @@ struct RenderOptions : CommonOptions {
 
 void addRenderCommand(CLI::App& app, RenderOptions& options);
 void addCheckCommand(CLI::App& app, CommonOptions& options);
+struct ViewOptions;
+void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
 int runCheck(const CommonOptions& options);
 

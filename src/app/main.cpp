@@ -1,11 +1,14 @@
 // glimmer: run GLIB scripts. `glimmer render` draws a script headless to a
-// PNG; `glimmer check` finds every problem without drawing.
+// PNG; `glimmer check` finds every problem without drawing; `glimmer view`
+// (or plain `glimmer script.glib`) opens the live window.
 #include <iostream>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "view/viewer.h"
 
 int main(int argc, char** argv) {
     using namespace glimmer;
@@ -13,21 +16,33 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     RenderOptions render;
     CommonOptions check;
+    ViewOptions view;
     addRenderCommand(app, render);
     addCheckCommand(app, check);
+    addViewCommand(app, view);
+    // `glimmer script.glib` is `glimmer view script.glib`, as glslViewer.
+    std::vector<char*> args(argv, argv + argc);
+    std::string viewWord = "view";
+    auto endsWith = [](const std::string& s, const std::string& e) {
+        return s.size() >= e.size() && s.compare(s.size() - e.size(), e.size(), e) == 0;
+    };
+    if (argc > 1 && endsWith(argv[1], ".glib")) args.insert(args.begin() + 1, viewWord.data());
     // CLI11 reports a mistyped command as "A subcommand is required"; name it.
-    if (argc > 1 && argv[1][0] != '-' && std::string(argv[1]) != "render" && std::string(argv[1]) != "check") {
-        std::cerr << "glimmer: error: unknown command '" << argv[1] << "'; the commands are 'render' and 'check'\n"
+    std::string first = args.size() > 1 ? args[1] : "";
+    if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view") {
+        std::cerr << "glimmer: error: unknown command '" << first
+                  << "'; the commands are 'render', 'check' and 'view'\n"
                   << "Run with --help for more information.\n";
         return kExitUsage;
     }
     try {
-        app.parse(argc, argv);
+        app.parse(int(args.size()), args.data());
     } catch (const CLI::ParseError& e) {
         int code = app.exit(e);
         return code == 0 ? kExitOk : kExitUsage;
     }
     if (app.got_subcommand("render")) return runRender(render);
     if (app.got_subcommand("check")) return runCheck(check);
+    if (app.got_subcommand("view")) return runView(view);
     return kExitUsage;
 }

@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "view/viewer.h"
 
 namespace glimmer {
 
@@ -41,6 +42,17 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
 void addCheckCommand(CLI::App& app, CommonOptions& o) {
     CLI::App* sub = app.add_subcommand("check", "parse, load, compile and link a script; draw nothing");
     addCommon(sub, o);
+}
+
+void addViewCommand(CLI::App& app, ViewOptions& o) {
+    CLI::App* sub = app.add_subcommand("view", "open a window with sliders; reload on every save");
+    sub->add_option("script", o.script, "the .glib script")->required();
+    sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
+    sub->add_option("--set", o.sets, "NAME=VALUE for a uniform range or checkbox (repeatable)");
+    sub->add_option("--size", o.size, "window size WxH (default: WindowSize, else 600x600)");
+    sub->add_option("--exec", o.exec, "commands to run, separated by ';': set NAME VALUE, reload, save FILE.png, "
+                                      "show UNIT|screen, quit");
+    sub->add_flag("!--no-stdin", o.readStdin, "do not read commands from standard input");
 }
 
 }  // namespace glimmer

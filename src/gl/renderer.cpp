@@ -112,12 +112,12 @@ void Renderer::releaseAll() {
     screen_.reset();
     if (screenTexture_) gl_.DeleteTextures(1, &screenTexture_);
     screenTexture_ = 0;
-    plan_ = nullptr;
+    plan_.reset();
 }
 
 bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& sources, bool everything) {
     releaseAll();
-    plan_ = &plan;
+    plan_ = std::make_unique<Plan>(plan);
     const std::string& file = plan.scriptFile;
     textures_.assign(plan.textures.size(), {});
     meshes_.resize(plan.meshes.size());

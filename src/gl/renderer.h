@@ -71,7 +71,7 @@ private:
     void drawStep(const Draw& d, const UniformValues& values, double time);
 
     GlApi gl_{};
-    const Plan* plan_ = nullptr;
+    std::unique_ptr<Plan> plan_;  // a copy: the caller's plan may move (a viewer swapping scripts)
     struct TextureObject {
         unsigned id = 0;  // 0: not made, nothing needed it
         int width = 0, height = 0;

@@ -1,5 +1,6 @@
 #include "plan/uniform_values.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 
@@ -16,6 +17,32 @@ const std::vector<double>& UniformValues::get(int program, const std::string& na
     static const std::vector<double> none;
     auto it = values_.find({program, name});
     return it == values_.end() ? none : it->second;
+}
+
+void UniformValues::carryOver(const Plan& before, const UniformValues& old, const Plan& now) {
+    for (size_t p = 0; p < now.programs.size(); ++p) {
+        for (const auto& u : now.programs[p].uniforms) {
+            for (size_t q = 0; q < before.programs.size(); ++q) {
+                if (before.programs[q].name != now.programs[p].name) continue;
+                for (const auto& was : before.programs[q].uniforms) {
+                    if (was.name != u.name || was.form != u.form) continue;
+                    std::vector<double> v = old.get(int(q), u.name);
+                    if (v.size() != u.values.size()) continue;
+                    if (u.form == UniformSetting::Form::Range) v[0] = std::clamp(v[0], u.min, u.max);
+                    values_[{int(p), u.name}] = v;
+                }
+            }
+        }
+    }
+}
+
+std::set<int> UniformValues::programsDifferingFrom(const UniformValues& other) const {
+    std::set<int> out;
+    for (const auto& [key, v] : values_)
+        if (other.get(key.program, key.name) != v) out.insert(key.program);
+    for (const auto& [key, v] : other.values_)
+        if (get(key.program, key.name) != v) out.insert(key.program);
+    return out;
 }
 
 bool UniformValues::applySet(const Plan& plan, const std::string& assignment, Diagnostics& diags) {

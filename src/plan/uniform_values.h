@@ -2,6 +2,7 @@
 // Kept apart from the plan so a reload or a slider move touches only this.
 #pragma once
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -28,6 +29,14 @@ public:
     bool applySet(const Plan& plan, const std::string& assignment, Diagnostics& diags);
 
     void set(int program, const std::string& name, std::vector<double> v) { values_[{program, name}] = std::move(v); }
+
+    // After a reload: every uniform of `now` whose Program name, uniform name
+    // and form are the same as in `before` keeps the value it had (a range
+    // value clamped into the new range); the rest start from the script.
+    void carryOver(const Plan& before, const UniformValues& old, const Plan& now);
+
+    // The programs whose values differ from `other` (same plan).
+    std::set<int> programsDifferingFrom(const UniformValues& other) const;
 
 private:
     std::map<UniformKey, std::vector<double>> values_;

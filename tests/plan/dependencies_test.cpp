@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "plan/dependencies.h"
+#include "plan/uniform_values.h"
 #include "plan_test_util.h"
 
 #include <fstream>
@@ -75,6 +76,41 @@ TEST(Dependencies, AllPassesIntoOneTargetRunTogether) {
     // B's target feeds C on the screen, and the screen also holds A's quad.
     c.programs = {programNamed(p, "B")};
     EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true, true}));
+}
+
+}  // namespace
+
+namespace {
+
+// Slider values survive a reload for uniforms whose Program, name and form
+// stay; a range value is clamped into a range that shrank.
+TEST(CarryOver, KeepsValuesOfUnchangedUniforms) {
+    TempProject tp;
+    Planned a = plan(tp.script(), "Vertex a.vert\nFragment a.frag\n"
+                                  "Program P  uA <0 1 10>  uB <0 1 10>  uC <true>  uD <0 5 10>\nQuadXY 0 1\n");
+    Planned b = plan(tp.script(), "Vertex a.vert\nFragment a.frag\nProgram Q uZ <0 1 2>\n"
+                                  "Program P  uA <0 1 10>  uB {1 0 0}  uC <false>  uD <0 5 6>\nQuadXY 0 1\n");
+    UniformValues old(a.plan);
+    old.set(0, "uA", {7});
+    old.set(0, "uB", {8});
+    old.set(0, "uC", {0});
+    old.set(0, "uD", {9});
+    UniformValues now(b.plan);
+    now.carryOver(a.plan, old, b.plan);
+    EXPECT_EQ(now.get(1, "uA"), std::vector<double>{7});           // same form: kept, P is now program 1
+    EXPECT_EQ(now.get(1, "uB"), (std::vector<double>{1, 0, 0, 1})); // form changed: from the script
+    EXPECT_EQ(now.get(1, "uC"), std::vector<double>{0});           // bool kept
+    EXPECT_EQ(now.get(1, "uD"), std::vector<double>{6});           // clamped to the new max
+    EXPECT_EQ(now.get(0, "uZ"), std::vector<double>{1});
+}
+
+TEST(CarryOver, ProgramsDifferingFrom) {
+    TempProject tp;
+    Planned a = plan(tp.script(), "Vertex a.vert\nFragment a.frag\nProgram P uA <0 1 10>\nProgram Q uB <0 1 10>\n");
+    UniformValues x(a.plan), y(a.plan);
+    EXPECT_TRUE(x.programsDifferingFrom(y).empty());
+    y.set(1, "uB", {3});
+    EXPECT_EQ(x.programsDifferingFrom(y), std::set<int>{1});
 }
 
 }  // namespace

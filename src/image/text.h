@@ -1,0 +1,18 @@
+// Text drawn into pixels, with stb_easy_font: the overlay of uniform values
+// that a saved handout keeps, and the labels of contact sheets.
+#pragma once
+#include <string>
+
+#include "image/image.h"
+
+namespace glimmer {
+
+// Draws `text` (newlines start new lines) with its top-left corner at
+// (x, y), row 0 at the top, each font pixel `scale` image pixels, over a
+// dark box so it stays readable on any picture. RGBA8 images only.
+void drawText(Image& img, int x, int y, const std::string& text, int scale = 2);
+
+// The size drawText would cover, box included.
+void measureText(const std::string& text, int scale, int& width, int& height);
+
+}  // namespace glimmer

@@ -1,0 +1,73 @@
+#include "view/view_commands.h"
+
+#include <charconv>
+#include <sstream>
+
+namespace glimmer {
+
+namespace {
+
+bool toNumber(const std::string& s, double& v) {
+    if (s == "true") return v = 1, true;
+    if (s == "false") return v = 0, true;
+    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    return ec == std::errc() && end == s.data() + s.size();
+}
+
+}  // namespace
+
+std::vector<std::string> splitCommands(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream ss(text);
+    for (std::string part; std::getline(ss, part, ';');) out.push_back(part);
+    return out;
+}
+
+std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string& error) {
+    error.clear();
+    std::istringstream in(line);
+    std::string word;
+    if (!(in >> word) || word[0] == '#') return std::nullopt;
+    std::vector<std::string> args;
+    for (std::string a; in >> a;) args.push_back(a);
+    ViewCommand c;
+    auto want = [&](size_t n, const char* usage) {
+        if (args.size() == n) return true;
+        error = std::string("usage: ") + usage;
+        return false;
+    };
+    if (word == "set") {
+        if (!want(2, "set NAME VALUE")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Set;
+        c.name = args[0];
+        if (!toNumber(args[1], c.value)) {
+            error = "set " + args[0] + ": '" + args[1] + "' is not a number";
+            return std::nullopt;
+        }
+    } else if (word == "reload") {
+        if (!want(0, "reload")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Reload;
+    } else if (word == "save") {
+        if (!want(1, "save FILE.png")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Save;
+        c.name = args[0];
+    } else if (word == "show") {
+        if (!want(1, "show TARGET_UNIT|screen")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Show;
+        double u = -1;
+        if (args[0] != "screen" && (!toNumber(args[0], u) || u < 0 || u > 31 || u != int(u))) {
+            error = "show: '" + args[0] + "' is not a texture unit (0 to 31) or 'screen'";
+            return std::nullopt;
+        }
+        c.unit = int(u);
+    } else if (word == "quit") {
+        if (!want(0, "quit")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Quit;
+    } else {
+        error = "unknown command '" + word + "' (set, reload, save, show, quit)";
+        return std::nullopt;
+    }
+    return c;
+}
+
+}  // namespace glimmer

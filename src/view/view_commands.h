@@ -1,0 +1,25 @@
+// The viewer's scripting commands, one a line on standard input or
+// separated by ';' in --exec: they make the window scriptable and testable.
+#pragma once
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace glimmer {
+
+struct ViewCommand {
+    enum class Kind { Set, Reload, Save, Show, Quit };
+    Kind kind = Kind::Quit;
+    std::string name;   // Set: the uniform; Save: the file
+    double value = 0;   // Set
+    int unit = -1;      // Show: texture unit, -1 for the screen
+};
+
+// Parses one command; nullopt and `error` for anything else. Blank lines
+// and lines starting with '#' give nullopt with an empty error.
+std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string& error);
+
+// Splits an --exec argument at ';'.
+std::vector<std::string> splitCommands(const std::string& text);
+
+}  // namespace glimmer
