@@ -1,0 +1,116 @@
+// The viewer's reload trigger: a change counts only once the file's content
+// has stayed the same for the settle time, so an editor that truncates
+// first or writes twice causes one reload of the finished file.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "view/file_watch.h"
+#include "view/view_commands.h"
+
+using namespace glimmer;
+using namespace std::chrono_literals;
+namespace fs = std::filesystem;
+
+namespace {
+
+struct TempFile {
+    fs::path path = fs::temp_directory_path() / ("glimmer_watch_" + std::to_string(::getpid()) + ".frag");
+    TempFile() { write("one"); }
+    ~TempFile() { fs::remove(path); }
+    void write(const std::string& s) const { std::ofstream(path, std::ios::binary | std::ios::trunc) << s; }
+};
+
+TEST(FileWatch, ReportsAChangeOnlyAfterItSettles) {
+    TempFile f;
+    FileWatch w(60ms);
+    w.watch({f.path.string()});
+    auto t0 = FileWatch::Clock::now();
+    EXPECT_TRUE(w.poll(t0).empty());
+    f.write("two");
+    EXPECT_TRUE(w.poll(t0 + 10ms).empty());   // just seen: not settled
+    EXPECT_TRUE(w.poll(t0 + 40ms).empty());
+    auto changed = w.poll(t0 + 80ms);          // same content for 70 ms
+    ASSERT_EQ(changed.size(), 1u);
+    EXPECT_EQ(changed[0], f.path.string());
+    EXPECT_TRUE(w.poll(t0 + 200ms).empty());  // reported once
+}
+
+TEST(FileWatch, TruncateThenWriteIsOneChange) {
+    TempFile f;
+    FileWatch w(60ms);
+    w.watch({f.path.string()});
+    auto t0 = FileWatch::Clock::now();
+    f.write("");  // the editor truncates...
+    EXPECT_TRUE(w.poll(t0 + 5ms).empty());
+    f.write("three");  // ...then writes: the settle clock starts again
+    EXPECT_TRUE(w.poll(t0 + 50ms).empty());
+    EXPECT_TRUE(w.poll(t0 + 100ms).empty());
+    EXPECT_EQ(w.poll(t0 + 120ms).size(), 1u);
+}
+
+TEST(FileWatch, WritingTheSameContentBackIsNoChange) {
+    TempFile f;
+    FileWatch w(60ms);
+    w.watch({f.path.string()});
+    auto t0 = FileWatch::Clock::now();
+    f.write("temporary");
+    EXPECT_TRUE(w.poll(t0 + 5ms).empty());
+    f.write("one");  // saved back as it was
+    EXPECT_TRUE(w.poll(t0 + 100ms).empty());
+    EXPECT_TRUE(w.poll(t0 + 300ms).empty());
+}
+
+TEST(FileWatch, AFileThatDisappearsAndComesBackCounts) {
+    TempFile f;
+    FileWatch w(60ms);
+    w.watch({f.path.string()});
+    auto t0 = FileWatch::Clock::now();
+    fs::remove(f.path);
+    EXPECT_TRUE(w.poll(t0 + 5ms).empty());
+    EXPECT_EQ(w.poll(t0 + 100ms).size(), 1u);  // gone, and stayed gone
+    f.write("back");
+    EXPECT_TRUE(w.poll(t0 + 110ms).empty());
+    EXPECT_EQ(w.poll(t0 + 200ms).size(), 1u);
+}
+
+TEST(ViewCommands, ParsesEveryCommand) {
+    std::string err;
+    auto set = parseViewCommand("set uAdd 3.5", err);
+    ASSERT_TRUE(set);
+    EXPECT_EQ(set->kind, ViewCommand::Kind::Set);
+    EXPECT_EQ(set->name, "uAdd");
+    EXPECT_EQ(set->value, 3.5);
+    EXPECT_EQ(parseViewCommand("  reload ", err)->kind, ViewCommand::Kind::Reload);
+    auto save = parseViewCommand("save out.png", err);
+    ASSERT_TRUE(save);
+    EXPECT_EQ(save->name, "out.png");
+    EXPECT_EQ(parseViewCommand("show 6", err)->unit, 6);
+    EXPECT_EQ(parseViewCommand("show screen", err)->unit, -1);
+    EXPECT_EQ(parseViewCommand("quit", err)->kind, ViewCommand::Kind::Quit);
+    EXPECT_EQ(parseViewCommand("set uOn true", err)->value, 1.0);
+}
+
+TEST(ViewCommands, ErrorsSayWhatIsWrong) {
+    std::string err;
+    EXPECT_FALSE(parseViewCommand("jump", err));
+    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, quit)");
+    EXPECT_FALSE(parseViewCommand("set uAdd", err));
+    EXPECT_EQ(err, "usage: set NAME VALUE");
+    EXPECT_FALSE(parseViewCommand("set uAdd lots", err));
+    EXPECT_EQ(err, "set uAdd: 'lots' is not a number");
+    EXPECT_FALSE(parseViewCommand("show 40", err));
+    EXPECT_EQ(err, "show: '40' is not a texture unit (0 to 31) or 'screen'");
+    EXPECT_FALSE(parseViewCommand("# a comment", err));
+    EXPECT_EQ(err, "");
+    EXPECT_FALSE(parseViewCommand("   ", err));
+    EXPECT_EQ(err, "");
+}
+
+TEST(ViewCommands, ExecSplitsAtSemicolons) {
+    EXPECT_EQ(splitCommands("set uAdd 3; save a.png;quit"),
+              (std::vector<std::string>{"set uAdd 3", " save a.png", "quit"}));
+}
+
+}  // namespace

@@ -1,0 +1,100 @@
+// The viewer in a real window: what it saves is what `glimmer render` draws,
+// and a broken edit costs neither the picture nor the slider values.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <iterator>
+
+#include <gtest/gtest.h>
+
+#include "viewer_process.h"
+
+namespace fs = std::filesystem;
+using namespace glimmer_viewer;
+
+namespace {
+
+struct Project {
+    fs::path dir;
+    Project() {
+        dir = fs::temp_directory_path() / ("glimmer_viewer_test_" + std::to_string(::getpid()) + "_" +
+                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(dir);
+        fs::create_directories(dir);
+        fs::path src(GLIMMER_SOURCE_DIR);
+        fs::copy_file(src / "scripts/bloom.glib", dir / "bloom.glib");
+        for (auto f : {"superblur.vert", "superblur.frag", "bloom.vert", "bloom.frag"})
+            fs::copy_file(src / "shaders" / f, dir / f);
+        fs::copy_file(src / "textures/grid.bmp", dir / "grid.bmp");
+    }
+    ~Project() { fs::remove_all(dir); }
+};
+
+int renderPng(const fs::path& script, const std::vector<std::string>& sets, const fs::path& out) {
+    std::string cmd = std::string(GLIMMER_BIN) + " render " + script.string() + " --size 256x256 -o " + out.string();
+    for (const auto& s : sets) cmd += " --set " + s;
+    cmd += " 2>/dev/null";
+    int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+TEST(Viewer, SavedPictureIsWhatRenderDraws) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "256x256"}, p.dir);
+    ASSERT_TRUE(v.waitForLog("glimmer view: loaded")) << v.log();
+    v.send("set uHalfSize 5");
+    v.send("set uAdd 3");
+    v.send("save view.png");
+    ASSERT_TRUE(waitForFile(p.dir / "view.png")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    ASSERT_EQ(renderPng(p.dir / "bloom.glib", {"uHalfSize=5", "uAdd=3"}, p.dir / "render.png"), 0);
+    EXPECT_EQ(readBytes(p.dir / "view.png"), readBytes(p.dir / "render.png"));
+}
+
+TEST(Viewer, BrokenEditKeepsPictureAndSlidersThenRecovers) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "256x256"}, p.dir);
+    ASSERT_TRUE(v.waitForLog("glimmer view: loaded")) << v.log();
+    v.send("set uHalfSize 5");
+    v.send("set uAdd 3");
+    v.send("save before.png");
+    ASSERT_TRUE(waitForFile(p.dir / "before.png")) << v.log();
+
+    // Break the composite shader on a line we know.
+    std::string good;
+    {
+        std::ifstream f(p.dir / "bloom.frag");
+        good.assign(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+    }
+    std::string broken = good;
+    broken.replace(broken.find("vec3 rgbblur"), 12, "vec3 rgbblur = undefinedThing; vec3 unused");
+    std::ofstream(p.dir / "bloom.frag", std::ios::trunc) << broken;
+    ASSERT_TRUE(v.waitForLog("failed; keeping the last good picture")) << v.log();
+    EXPECT_NE(v.log().find("bloom.frag:12:"), std::string::npos) << v.log();
+
+    v.send("save broken.png");
+    ASSERT_TRUE(waitForFile(p.dir / "broken.png")) << v.log();
+    EXPECT_EQ(readBytes(p.dir / "broken.png"), readBytes(p.dir / "before.png"));
+
+    // Fixed again: the script reloads and the sliders still hold 5 and 3.
+    std::ofstream(p.dir / "bloom.frag", std::ios::trunc) << good;
+    ASSERT_TRUE(v.waitForLog("reloaded after a change to")) << v.log();
+    v.send("save after.png");
+    ASSERT_TRUE(waitForFile(p.dir / "after.png")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    EXPECT_EQ(readBytes(p.dir / "after.png"), readBytes(p.dir / "before.png"));
+}
+
+TEST(Viewer, ExecRunsCommandsAndQuits) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "256x256", "--no-stdin", "--exec",
+                     "set uHalfSize 5; set uAdd 3; show 6; show screen; save exec.png; quit"},
+                    p.dir);
+    ASSERT_TRUE(waitForFile(p.dir / "exec.png")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    ASSERT_EQ(renderPng(p.dir / "bloom.glib", {"uHalfSize=5", "uAdd=3"}, p.dir / "render.png"), 0);
+    EXPECT_EQ(readBytes(p.dir / "exec.png"), readBytes(p.dir / "render.png"));
+}
+
+}  // namespace
