@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <fmt/format.h>
+#include <glm/gtc/matrix_inverse.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "geometry/mesh.h"
@@ -302,7 +303,7 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
                 gl_.ClearColor(s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a);
                 gl_.Clear(GL_COLOR_BUFFER_BIT | (target->depth ? GL_DEPTH_BUFFER_BIT : 0));
             } else {
-                drawStep(s.draw, values, time);
+                drawStep(s.draw, values, time, pass.targets.empty());
             }
         }
         if (timings) {
@@ -314,15 +315,19 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void Renderer::drawStep(const Draw& d, const UniformValues& values, double time) {
+void Renderer::drawStep(const Draw& d, const UniformValues& values, double time, bool toScreen) {
     const MeshBuffers* mesh = meshes_[d.mesh].get();
     if (!mesh) return;
     const Program* prog = d.program >= 0 ? programs_[d.program].get() : nullptr;
     if (d.program >= 0 && !prog) return;  // it failed to build; already reported
 
     // The legacy matrix stacks feed gl_ModelViewProjectionMatrix and friends.
+    // P * V * scene * V^-1 * (V * M) = P * V * scene * M: the mouse turns
+    // the world, the ModelView matrix stays the script's.
+    glm::mat4 projection = d.projection;
+    if (toScreen && scene_ != glm::mat4(1.f)) projection = d.projection * d.view * scene_ * glm::inverse(d.view);
     gl_.MatrixMode(GL_PROJECTION);
-    gl_.LoadMatrixf(glm::value_ptr(d.projection));
+    gl_.LoadMatrixf(glm::value_ptr(projection));
     gl_.MatrixMode(GL_MODELVIEW);
     gl_.LoadMatrixf(glm::value_ptr(d.modelView));
     gl_.Color4f(d.color.r, d.color.g, d.color.b, d.color.a);

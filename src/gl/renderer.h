@@ -51,6 +51,11 @@ public:
     // What the linked shaders declare, for sliders of the right kind; null
     // when the program was not built.
     const std::vector<ActiveUniform>* activeUniformsOf(int program) const;
+    // glman's mouse rotate and zoom: turns and scales everything drawn to the
+    // screen about the world origin as seen by the eye. It goes into the
+    // projection, so shaders see the script's own ModelView matrix.
+    void setSceneTransform(const glm::mat4& m) { scene_ = m; }
+
     // Programs that read the built-in Timer uniform must redraw as time runs.
     bool usesTimer(int program) const;
 
@@ -68,7 +73,7 @@ private:
     void releaseAll();
     // A depth renderbuffer of this size, attached to the bound framebuffer.
     unsigned attachDepth(int width, int height);
-    void drawStep(const Draw& d, const UniformValues& values, double time);
+    void drawStep(const Draw& d, const UniformValues& values, double time, bool toScreen);
 
     GlApi gl_{};
     std::unique_ptr<Plan> plan_;  // a copy: the caller's plan may move (a viewer swapping scripts)
@@ -81,6 +86,7 @@ private:
     std::vector<std::unique_ptr<Program>> programs_;
     std::vector<std::unique_ptr<Target>> targets_;
     std::unique_ptr<Target> screen_;
+    glm::mat4 scene_{1.f};
     unsigned screenTexture_ = 0;
 };
 

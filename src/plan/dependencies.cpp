@@ -26,7 +26,7 @@ std::vector<bool> passesToRun(const Plan& plan, const Change& change) {
             bool touched = change.everything;
             for (int prog : programsOfPass(p)) touched |= change.programs.count(prog) > 0;
             for (int t : p.reads) touched |= dirtyTextures.count(t) > 0;
-            if (p.targets.empty()) touched |= screenDirty;
+            if (p.targets.empty()) touched |= screenDirty || change.screen;
             for (int t : p.targets) touched |= dirtyTextures.count(t) > 0;
             if (!touched) continue;
             run[i] = grew = true;

@@ -14,6 +14,7 @@ struct Change {
     std::set<int> programs;  // programs whose uniforms changed (indices into Plan::programs)
     std::set<int> textures;  // textures whose contents changed outside any pass (an image reloaded)
     bool everything = false; // a reload, a resize: every needed pass
+    bool screen = false;     // the view of the screen changed (mouse rotate, zoom)
 };
 
 // One flag per pass: true for a needed pass the change reaches, directly or

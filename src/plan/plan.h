@@ -76,6 +76,7 @@ struct Draw {
     int program = -1;  // -1: fixed function
     glm::mat4 projection{1.f};
     glm::mat4 modelView{1.f};
+    glm::mat4 view{1.f};  // the LookAt part of modelView, so a viewer can turn the scene about the eye's target
     glm::vec4 color{1.f};
     std::map<int, int> units;  // texture unit -> texture, as bound when the draw was written
     float lineWidth = 1.f, pointSize = 1.f;

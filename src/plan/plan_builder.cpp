@@ -430,6 +430,7 @@ private:
         d.program = program_;
         d.projection = projection_.matrix(w, h);
         d.modelView = view_ * model_;
+        d.view = view_;
         d.color = color_;
         d.units = units_;
         d.lineWidth = lineWidth_;

@@ -120,6 +120,13 @@ std::vector<ViewCommand> drawPanel(ViewerState& s) {
     }
     ImGui::SameLine();
     ImGui::Text("t = %.2f s", s.time);
+    if (ImGui::Button("Reset view")) {
+        s.yaw = s.pitch = 0;
+        s.zoom = 1;
+        s.sceneMoved = true;
+    }
+    ImGui::SameLine();
+    ImGui::TextDisabled("drag: rotate, wheel: zoom");
 
     if (s.good) {
         // The pass inspector: any render target full-window.

@@ -5,13 +5,16 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iostream>
 #include <set>
 #include <sstream>
 #include <thread>
 
 #include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
 
 #include "app/commands.h"
 #include "image/text.h"
@@ -133,6 +136,7 @@ public:
                 save("glimmer.png", false);
             sDown_ = glfwGetKey(window_.handle(), GLFW_KEY_S) == GLFW_PRESS;
 
+            mouse();
             renderScene();
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
@@ -182,6 +186,32 @@ private:
         if (list != watch_.paths()) watch_.watch(list);
     }
 
+    void mouse() {
+        ImGuiIO& io = ImGui::GetIO();
+        GLFWwindow* w = window_.handle();
+        double x = 0, y = 0;
+        glfwGetCursorPos(w, &x, &y);
+        bool down = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+        if (down && dragging_ && !io.WantCaptureMouse) {
+            s_.yaw += float(x - lastX_) * 0.4f;
+            s_.pitch += float(y - lastY_) * 0.4f;
+            s_.sceneMoved = true;
+        }
+        dragging_ = down && !io.WantCaptureMouse;
+        lastX_ = x;
+        lastY_ = y;
+        if (!io.WantCaptureMouse && io.MouseWheel != 0) {
+            s_.zoom = std::clamp(s_.zoom * std::pow(1.1f, io.MouseWheel), 0.05f, 20.f);
+            s_.sceneMoved = true;
+        }
+        if (s_.renderer) {
+            glm::mat4 m = glm::scale(glm::mat4(1.f), glm::vec3(s_.zoom));
+            m = glm::rotate(m, glm::radians(s_.pitch), glm::vec3(1, 0, 0));
+            m = glm::rotate(m, glm::radians(s_.yaw), glm::vec3(0, 1, 0));
+            s_.renderer->setSceneTransform(m);
+        }
+    }
+
     // Runs the passes that changed since the picture was drawn: all after a
     // load, the ones reading a changed Program's uniforms, the ones reading
     // Timer while time runs; nothing when nothing changed.
@@ -190,6 +220,8 @@ private:
         const Plan& plan = s_.good->plan;
         Change change;
         change.everything = s_.drawAll;
+        change.screen = s_.sceneMoved;
+        s_.sceneMoved = false;
         if (s_.drawnWith) change.programs = s_.values->programsDifferingFrom(*s_.drawnWith);
         if (s_.time != s_.drawnTime)
             for (size_t p = 0; p < plan.programs.size(); ++p)
@@ -289,6 +321,8 @@ private:
     ViewerState s_;
     FileWatch watch_;
     bool sDown_ = false;
+    bool dragging_ = false;
+    double lastX_ = 0, lastY_ = 0;
     GlApi fallback_{};
     bool fallbackLoaded_ = false;
 };

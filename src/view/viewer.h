@@ -48,6 +48,11 @@ struct ViewerState {
     std::vector<PassTiming> lastTimings;
     double lastFrameMs = 0;
     std::string status;  // a one-line message for the panel (saved ..., reloaded ...)
+
+    // glman's mouse: drag to turn the scene, scroll to zoom; kept out of the
+    // script's ModelView matrix (see Renderer::setSceneTransform).
+    float yaw = 0, pitch = 0, zoom = 1;
+    bool sceneMoved = false;
 };
 
 // The "name = value" lines of the overlay, the same in the window and in a

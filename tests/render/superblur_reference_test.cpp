@@ -3,6 +3,8 @@
 // exactly with its quad, so every superblur tap lands on a texel centre and
 // the reference needs no model of texture filtering.
 #include <algorithm>
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 
@@ -23,7 +25,9 @@ namespace {
 constexpr int kW = 80, kH = 48;
 
 fs::path calibrationScript() {
-    fs::path dir = fs::temp_directory_path() / "glimmer_calibration";
+    // One folder per process: CTest runs the cases of this file in parallel
+    // processes, and one must never read another's half-written files.
+    fs::path dir = fs::temp_directory_path() / ("glimmer_calibration_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     std::string err;
     EXPECT_TRUE(writeBmp((dir / "input.bmp").string(), makeNoiseImage(kW, kH, 7), err)) << err;
