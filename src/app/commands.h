@@ -29,7 +29,14 @@ struct RenderOptions : CommonOptions {
     bool timings = false;
 };
 
+struct SheetOptions : CommonOptions {
+    std::vector<std::string> vary;  // NAME=V1,V2,... (columns, then rows)
+    std::string output = "sheet.png";
+};
+
 void addRenderCommand(CLI::App& app, RenderOptions& options);
+void addSheetCommand(CLI::App& app, SheetOptions& options);
+int runSheet(const SheetOptions& options);
 void addCheckCommand(CLI::App& app, CommonOptions& options);
 struct ViewOptions;
 void addViewCommand(CLI::App& app, ViewOptions& options);

@@ -17,9 +17,11 @@ int main(int argc, char** argv) {
     RenderOptions render;
     CommonOptions check;
     ViewOptions view;
+    SheetOptions sheet;
     addRenderCommand(app, render);
     addCheckCommand(app, check);
     addViewCommand(app, view);
+    addSheetCommand(app, sheet);
     // `glimmer script.glib` is `glimmer view script.glib`, as glslViewer.
     std::vector<char*> args(argv, argv + argc);
     std::string viewWord = "view";
@@ -29,9 +31,10 @@ int main(int argc, char** argv) {
     if (argc > 1 && endsWith(argv[1], ".glib")) args.insert(args.begin() + 1, viewWord.data());
     // CLI11 reports a mistyped command as "A subcommand is required"; name it.
     std::string first = args.size() > 1 ? args[1] : "";
-    if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view") {
+    if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view" &&
+        first != "sheet") {
         std::cerr << "glimmer: error: unknown command '" << first
-                  << "'; the commands are 'render', 'check' and 'view'\n"
+                  << "'; the commands are 'render', 'check', 'view' and 'sheet'\n"
                   << "Run with --help for more information.\n";
         return kExitUsage;
     }
@@ -44,5 +47,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return runRender(render);
     if (app.got_subcommand("check")) return runCheck(check);
     if (app.got_subcommand("view")) return runView(view);
+    if (app.got_subcommand("sheet")) return runSheet(sheet);
     return kExitUsage;
 }
