@@ -22,7 +22,7 @@ namespace glimmer {
     X(GetError) X(GetString) X(GetIntegerv) X(Enable) X(Disable) X(Viewport) X(Clear) X(ClearColor)     \
     X(ClearDepth) X(DepthFunc) X(DepthMask) X(Finish) X(Flush) X(ReadPixels) X(PixelStorei)             \
     X(MatrixMode) X(LoadMatrixf) X(Color4f) X(LineWidth) X(PointSize) X(ShadeModel)                     \
-    X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexParameteri) X(GetTexImage)       \
+    X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexImage3D) X(TexParameteri) X(GetTexImage) \
     X(ActiveTexture) X(ClientActiveTexture)                                                              \
     X(EnableClientState) X(DisableClientState) X(VertexPointer) X(NormalPointer) X(TexCoordPointer)     \
     X(DrawElements) X(DrawArrays) X(Begin) X(End) X(TexCoord2f) X(Vertex2f)                             \
@@ -38,7 +38,7 @@ namespace glimmer {
     X(CheckFramebufferStatus) X(GenRenderbuffers) X(DeleteRenderbuffers) X(BindRenderbuffer)            \
     X(RenderbufferStorage) X(FramebufferRenderbuffer) X(DrawBuffers) X(DrawBuffer) X(ReadBuffer)        \
     X(BlitFramebuffer) X(GenVertexArrays) X(BindVertexArray) X(DeleteVertexArrays)                      \
-    X(GenQueries) X(DeleteQueries) X(BeginQuery) X(EndQuery) X(GetQueryObjectui64v)
+    X(GenQueries) X(DeleteQueries) X(BeginQuery) X(EndQuery) X(GetQueryObjectui64v) X(PatchParameteri)
 
 struct GlApi {
 #define GLIMMER_GL_MEMBER(name) decltype(&::gl##name) name = nullptr;

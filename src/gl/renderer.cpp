@@ -1,7 +1,10 @@
 #include "gl/renderer.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <map>
+#include <set>
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_inverse.hpp>
@@ -9,6 +12,8 @@
 
 #include "geometry/mesh.h"
 #include "gl/shader_build.h"
+#include "image/cubemap.h"
+#include "image/noise.h"
 
 namespace glimmer {
 
@@ -22,8 +27,13 @@ struct Renderer::Target {
 struct Renderer::Program {
     unsigned id = 0;
     std::vector<ActiveUniform> uniforms;
+    std::vector<const UniformSetting*> settings;  // per uniform: how the script wrote it (null: not set)
     int timerLocation = -1;
     bool usesTangent = false;
+    bool noise2 = false, noise3 = false;  // declares the built-in Noise2 / Noise3
+    bool tessellated = false;             // has a tessellation evaluation shader: draws patches only
+    GLint geometryInput = 0;              // the geometry shader's input primitive; 0: none
+    std::string name;
 };
 
 struct Renderer::MeshBuffers {
@@ -51,12 +61,40 @@ Image flipRows(Image img) {
     return img;
 }
 
-// Every texture is sampled the same way: linear, and OpenGL's default wrap.
-void textureParameters(const GlApi& gl) {
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    gl.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+// Every texture is sampled the same way: linear, and OpenGL's default wrap
+// (cube maps clamp, so a face's edge does not blend in its opposite edge).
+void textureParameters(const GlApi& gl, GLenum target = GL_TEXTURE_2D) {
+    GLint wrap = target == GL_TEXTURE_CUBE_MAP ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+    gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.TexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+    gl.TexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+    if (target != GL_TEXTURE_2D) gl.TexParameteri(target, GL_TEXTURE_WRAP_R, wrap);
+}
+
+GLenum textureTarget(TextureDecl::Kind k) {
+    switch (k) {
+    case TextureDecl::Kind::Tex2D: return GL_TEXTURE_2D;
+    case TextureDecl::Kind::Tex3D: return GL_TEXTURE_3D;
+    case TextureDecl::Kind::Cube: return GL_TEXTURE_CUBE_MAP;
+    }
+    return GL_TEXTURE_2D;
+}
+
+constexpr GLenum kTargets[] = {GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+
+void uploadVolume(const GlApi& gl, const Volume& v) {
+    if (v.type == Image::Type::U8)
+        gl.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, v.width, v.height, v.depth, 0, GL_RGBA, GL_UNSIGNED_BYTE, v.u8.data());
+    else
+        gl.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, v.width, v.height, v.depth, 0, GL_RGBA, GL_FLOAT, v.f32.data());
+}
+
+std::vector<double> meshPoints(const MeshDecl& m, std::vector<glm::vec3>& out) {
+    out.clear();
+    for (size_t i = 0; i + 2 < m.points.size(); i += 3)
+        out.emplace_back(float(m.points[i]), float(m.points[i + 1]), float(m.points[i + 2]));
+    return m.points;
 }
 
 bool makeMesh(const MeshDecl& m, Mesh& mesh, std::string& error) {
@@ -70,7 +108,72 @@ bool makeMesh(const MeshDecl& m, Mesh& mesh, std::string& error) {
     case CommandKind::Torus: mesh = makeTorus(float(p[0]), float(p[1]), std::max(i(2), 3), std::max(i(3), 3)); return true;
     case CommandKind::Box: mesh = makeBox(float(p[0]), float(p[1]), float(p[2])); return true;
     case CommandKind::Obj: return loadObj(m.path, mesh, error);
+    case CommandKind::Cylinder: mesh = makeCylinder(float(p[0]), float(p[1]), std::max(i(2), 3)); return true;
+    case CommandKind::Cone: mesh = makeCone(float(p[0]), float(p[1]), std::max(i(2), 3)); return true;
+    case CommandKind::DiskXY: mesh = makeDiskXY(float(p[0]), std::max(i(1), 3)); return true;
+    case CommandKind::Teapot: mesh = makeTeapot(float(p[0]), std::max(i(1), 1)); return true;
+    case CommandKind::QuadBox: mesh = makeQuadBox(float(p[0])); return true;
+    case CommandKind::PointCloud: mesh = makePointCloud(i(0), float(p[1])); return true;
+    case CommandKind::JitterCloud: mesh = makeJitterCloud(i(0), float(p[1]), float(p[2])); return true;
+    case CommandKind::Triangles:
+    case CommandKind::LinesAdjacency:
+    case CommandKind::GlBegin: {
+        std::vector<glm::vec3> pts;
+        meshPoints(m, pts);
+        if (m.shape == CommandKind::Triangles) mesh = makeTrianglesFrom(pts);
+        else if (m.shape == CommandKind::LinesAdjacency) mesh = makeLinesAdjacency(pts);
+        else mesh = makeImmediate(ImmediatePrimitive(i(0)), pts);
+        return true;
+    }
+    case CommandKind::ObjAdj:
+    case CommandKind::WireObj: {
+        Mesh solid;
+        if (!loadObj(m.path, solid, error)) return false;
+        mesh = m.shape == CommandKind::ObjAdj ? makeObjAdjacency(solid) : makeWire(solid);
+        return true;
+    }
+    case CommandKind::WireBox:
+    case CommandKind::WireSphere:
+    case CommandKind::WireTorus:
+    case CommandKind::WireCylinder:
+    case CommandKind::WireCone:
+    case CommandKind::WireTeapot: {
+        static const std::map<CommandKind, CommandKind> solidOf = {
+            {CommandKind::WireBox, CommandKind::Box},           {CommandKind::WireSphere, CommandKind::Sphere},
+            {CommandKind::WireTorus, CommandKind::Torus},       {CommandKind::WireCylinder, CommandKind::Cylinder},
+            {CommandKind::WireCone, CommandKind::Cone},         {CommandKind::WireTeapot, CommandKind::Teapot}};
+        MeshDecl solidDecl = m;
+        solidDecl.shape = solidOf.at(m.shape);
+        Mesh solid;
+        if (!makeMesh(solidDecl, solid, error)) return false;
+        mesh = makeWire(solid);
+        return true;
+    }
     default: error = "no mesh for this command"; return false;
+    }
+}
+
+GLenum glPrimitive(Mesh::Primitive p) {
+    switch (p) {
+    case Mesh::Primitive::Triangles: return GL_TRIANGLES;
+    case Mesh::Primitive::Lines: return GL_LINES;
+    case Mesh::Primitive::Points: return GL_POINTS;
+    case Mesh::Primitive::LinesAdjacency: return GL_LINES_ADJACENCY;
+    case Mesh::Primitive::TrianglesAdjacency: return GL_TRIANGLES_ADJACENCY;
+    case Mesh::Primitive::Patches: return GL_PATCHES;
+    }
+    return GL_TRIANGLES;
+}
+
+const char* primitiveName(GLenum p) {
+    switch (p) {
+    case GL_POINTS: return "points";
+    case GL_LINES: return "lines";
+    case GL_LINES_ADJACENCY: return "lines_adjacency";
+    case GL_TRIANGLES: return "triangles";
+    case GL_TRIANGLES_ADJACENCY: return "triangles_adjacency";
+    case GL_PATCHES: return "patches";
+    default: return "another primitive";
     }
 }
 
@@ -82,7 +185,51 @@ std::unique_ptr<Renderer> Renderer::create(const GetProcAddress& getProc, std::s
     return r;
 }
 
-Renderer::~Renderer() { releaseAll(); }
+Renderer::~Renderer() {
+    releaseAll();
+    for (auto* cache : {&noise2_, &noise3_})
+        for (auto& [res, id] : *cache) gl_.DeleteTextures(1, &id);
+}
+
+unsigned Renderer::noiseTexture(bool threeD, int res) {
+    auto& cache = threeD ? noise3_ : noise2_;
+    auto it = cache.find(res);
+    if (it != cache.end()) return it->second;
+    unsigned id = 0;
+    gl_.GenTextures(1, &id);
+    gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    if (threeD) {
+        gl_.BindTexture(GL_TEXTURE_3D, id);
+        textureParameters(gl_, GL_TEXTURE_3D);
+        uploadVolume(gl_, makeNoise3D(res));
+        gl_.BindTexture(GL_TEXTURE_3D, 0);
+    } else {
+        Image img = makeNoise2D(res);
+        gl_.BindTexture(GL_TEXTURE_2D, id);
+        textureParameters(gl_, GL_TEXTURE_2D);
+        gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                       flipRows(img.u8, img.height).data());
+        gl_.BindTexture(GL_TEXTURE_2D, 0);
+    }
+    cache[res] = id;
+    return id;
+}
+
+std::string Renderer::drawProblem(const Program* prog, const MeshBuffers* mesh) const {
+    bool patches = mesh->primitive == GL_PATCHES;
+    if (patches && !(prog && prog->tessellated))
+        return "patches (glBegin gl_patches) need a Program with a TessEvaluation shader";
+    if (!patches && prog && prog->tessellated)
+        return fmt::format("Program {} has tessellation shaders, which draw patches only (glBegin gl_patches)",
+                           prog->name);
+    if (prog && prog->geometryInput && !prog->tessellated) {
+        GLenum want = GLenum(prog->geometryInput);
+        if (want != mesh->primitive)
+            return fmt::format("the geometry shader of Program {} takes {}, but this shape is {}", prog->name,
+                               primitiveName(want), primitiveName(mesh->primitive));
+    }
+    return {};
+}
 
 std::string Renderer::rendererName() const {
     const GLubyte* s = gl_.GetString(GL_RENDERER);
@@ -142,20 +289,56 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
     for (size_t i = 0; i < plan.textures.size(); ++i) {
         if (!texUsed[i]) continue;
         const TextureDecl& t = plan.textures[i];
+        const GLenum target = textureTarget(t.kind);
+        const bool file3D = t.kind == TextureDecl::Kind::Tex3D && t.source == TextureDecl::Source::File;
         Image img;
-        if (t.source == TextureDecl::Source::File) {
-            std::string why;
-            if (!loadImage(t.path, img, why)) {
-                diags.error(file, t.loc, fmt::format("cannot load '{}': {}", t.shown, why));
-                continue;
-            }
+        Volume vol;
+        std::array<Image, 6> faces;
+        std::string why;
+        bool loaded = true;
+        if (t.kind == TextureDecl::Kind::Cube) {
+            std::array<std::string, 6> paths;
+            for (size_t k = 0; k < 6; ++k) paths[k] = t.facePaths.at(k);
+            loaded = loadCubeMap(paths, faces, why);
+        } else if (file3D) {
+            loaded = loadVolume(t.path, vol, why);
+        } else if (t.source == TextureDecl::Source::File) {
+            loaded = loadImage(t.path, img, why);
+        }
+        if (!loaded) {
+            diags.error(file, t.loc, fmt::format("cannot load '{}': {}", t.shown, why));
+            continue;
         }
         unsigned id = 0;
         gl_.GenTextures(1, &id);
-        gl_.BindTexture(GL_TEXTURE_2D, id);
-        textureParameters(gl_);
+        gl_.BindTexture(target, id);
+        textureParameters(gl_, target);
         gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-        if (t.source == TextureDecl::Source::File) {
+        TextureObject obj{id, target, t.width, t.height};
+        if (t.kind == TextureDecl::Kind::Cube) {
+            // OpenGL's cube faces have t = 0 at the top as seen from inside
+            // (see image/cubemap.h): the faces go up as they are, not flipped.
+            for (size_t k = 0; k < 6; ++k) {
+                const Image& f = faces[k];
+                GLenum face = GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + k);
+                if (f.type == Image::Type::U8)
+                    gl_.TexImage2D(face, 0, GL_RGBA8, f.width, f.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, f.u8.data());
+                else
+                    gl_.TexImage2D(face, 0, GL_RGBA32F, f.width, f.height, 0, GL_RGBA, GL_FLOAT, f.f32.data());
+            }
+            obj.width = faces[0].width;
+            obj.height = faces[0].height;
+        } else if (t.kind == TextureDecl::Kind::Tex3D) {
+            if (!file3D) {
+                vol.width = t.width;
+                vol.height = t.height;
+                vol.depth = t.depth;
+                vol.u8.assign(size_t(t.width) * size_t(t.height) * size_t(t.depth) * 4, 0);
+            }
+            uploadVolume(gl_, vol);
+            obj.width = vol.width;
+            obj.height = vol.height;
+        } else if (t.source == TextureDecl::Source::File) {
             // Image rows run top-down; OpenGL's t = 0 is the bottom row.
             if (img.type == Image::Type::U8)
                 gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
@@ -163,13 +346,17 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
             else
                 gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, img.width, img.height, 0, GL_RGBA, GL_FLOAT,
                                flipRows(img.f32, img.height).data());
+            obj.width = img.width;
+            obj.height = img.height;
         } else {
             // Start targets black rather than with whatever memory held.
             std::vector<std::uint8_t> zeros(size_t(t.width) * size_t(t.height) * 4, 0);
             gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, zeros.data());
         }
-        textures_[i] = {id, img.empty() ? t.width : img.width, img.empty() ? t.height : img.height};
+        gl_.BindTexture(target, 0);
+        textures_[i] = obj;
     }
+    gl_.Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
 
     for (size_t i = 0; i < plan.meshes.size(); ++i) {
         if (!meshUsed[i]) continue;
@@ -189,9 +376,7 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
         gl_.BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
                        mesh.indices.data(), GL_STATIC_DRAW);
         b->count = GLsizei(mesh.indices.size());
-        b->primitive = mesh.primitive == Mesh::Primitive::Lines    ? GL_LINES
-                       : mesh.primitive == Mesh::Primitive::Points ? GL_POINTS
-                                                                   : GL_TRIANGLES;
+        b->primitive = glPrimitive(mesh.primitive);
         meshes_[i] = std::move(b);
     }
     gl_.BindBuffer(GL_ARRAY_BUFFER, 0);
@@ -207,8 +392,50 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
         p->uniforms = activeUniforms(gl_, id);
         p->timerLocation = gl_.GetUniformLocation(id, "Timer");
         p->usesTangent = gl_.GetAttribLocation(id, "Tangent") == kTangentLocation;
+        p->name = decl.name;
+        for (const auto& st : decl.stages) {
+            if (st.kind == ShaderStage::Kind::TessEvaluation) p->tessellated = true;
+            if (st.kind == ShaderStage::Kind::Geometry) gl_.GetProgramiv(id, GL_GEOMETRY_INPUT_TYPE, &p->geometryInput);
+        }
         checkUniformSettings(decl, p->uniforms, file, diags);
+        for (const auto& u : p->uniforms) {
+            const UniformSetting* setting = nullptr;
+            for (const auto& st : decl.uniforms)
+                if (st.name == u.name) setting = &st;
+            p->settings.push_back(setting);
+            // glman's built-in noise: Noise2 on unit 2, Noise3 on unit 3,
+            // made only for programs that declare them.
+            bool is2 = u.name == "Noise2", is3 = u.name == "Noise3";
+            if (!is2 && !is3) continue;
+            GLenum want = is2 ? GL_SAMPLER_2D : GL_SAMPLER_3D;
+            if (u.type != want) {
+                diags.warning(file, decl.loc, fmt::format("Program {} declares {} as another type; the built-in noise "
+                                                          "is a {}", decl.name, u.name, is2 ? "sampler2D" : "sampler3D"));
+                continue;
+            }
+            (is2 ? p->noise2 : p->noise3) = true;
+            noiseTexture(is3, is2 ? plan.noise2DRes : plan.noise3DRes);
+            if (!setting) {
+                gl_.UseProgram(id);
+                gl_.Uniform1i(u.location, is2 ? 2 : 3);
+                gl_.UseProgram(0);
+            }
+        }
         programs_[i] = std::move(p);
+    }
+
+    // Shapes a program cannot draw (GL would refuse them with an error).
+    std::set<std::pair<int, int>> told;
+    for (const auto& pass : plan.passes) {
+        if (!pass.needed && !everything) continue;
+        for (const auto& st : pass.steps) {
+            if (st.kind != Step::Kind::Draw || !meshes_[st.draw.mesh]) continue;
+            const Program* prog = st.draw.program >= 0 ? programs_[st.draw.program].get() : nullptr;
+            if (st.draw.program >= 0 && !prog) continue;
+            std::string why = drawProblem(prog, meshes_[st.draw.mesh].get());
+            if (!why.empty() && told.insert({st.draw.program, st.draw.mesh}).second)
+                diags.warning(file, st.draw.loc, why + "; not drawn");
+        }
     }
 
     // Targets: one framebuffer per distinct set of textures written at once.
@@ -335,17 +562,40 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
     gl_.PointSize(d.pointSize);
     gl_.ShadeModel(d.flatShading ? GL_FLAT : GL_SMOOTH);
 
+    if (!drawProblem(prog, mesh).empty()) return;  // told in prepare
+
+    // Each unit holds the texture the script bound there last, on its own
+    // target; the unit's other targets are emptied, so a sampler of the
+    // wrong kind reads nothing rather than an older texture.
     for (const auto& [unit, tex] : d.units) {
         gl_.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        gl_.BindTexture(GL_TEXTURE_2D, textures_[tex].id);
+        const TextureObject& t = textures_[tex];
+        for (GLenum target : kTargets) gl_.BindTexture(target, target == t.target ? t.id : 0);
+    }
+    // The built-in noise, on units 2 and 3, unless the script put a texture
+    // of the same kind there.
+    if (prog && (prog->noise2 || prog->noise3)) {
+        for (bool three : {false, true}) {
+            if (!(three ? prog->noise3 : prog->noise2)) continue;
+            int unit = three ? 3 : 2;
+            GLenum target = three ? GL_TEXTURE_3D : GL_TEXTURE_2D;
+            auto it = d.units.find(unit);
+            if (it != d.units.end() && textures_[it->second].target == target) continue;
+            gl_.ActiveTexture(GLenum(GL_TEXTURE0 + unit));
+            gl_.BindTexture(target, noiseTexture(three, three ? plan_->noise3DRes : plan_->noise2DRes));
+        }
     }
     gl_.ActiveTexture(GL_TEXTURE0);
+    if (mesh->primitive == GL_PATCHES) gl_.PatchParameteri(GL_PATCH_VERTICES, d.patchVertices);
 
     gl_.UseProgram(prog ? prog->id : 0);
     if (prog) {
-        for (const auto& u : prog->uniforms) {
+        for (size_t k = 0; k < prog->uniforms.size(); ++k) {
+            const ActiveUniform& u = prog->uniforms[k];
             const auto& v = values.get(d.program, u.name);
-            if (!v.empty()) uploadUniform(gl_, u, v);
+            if (v.empty()) continue;
+            const UniformSetting* setting = prog->settings[k];
+            uploadUniform(gl_, u, setting ? convertUniform(setting->form, u, v) : v);
         }
         if (prog->timerLocation >= 0) {
             double t = std::fmod(time / plan_->timerPeriod, 1.0);
@@ -420,6 +670,7 @@ Image Renderer::readScreen() const {
 Image Renderer::readTexture(int texture) const {
     if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
     const TextureObject& t = textures_[size_t(texture)];
+    if (t.target != GL_TEXTURE_2D) return {};  // 3-D textures and cube maps are not pictures
     Image img = Image::rgba8(t.width, t.height);
     gl_.BindTexture(GL_TEXTURE_2D, t.id);
     gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);

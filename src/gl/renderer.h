@@ -2,6 +2,7 @@
 // check, view, bench) drives a Renderer; every backend only hands it a
 // function that finds GL entry points. It owns every GL object it makes.
 #pragma once
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -56,6 +57,10 @@ public:
     // projection, so shaders see the script's own ModelView matrix.
     void setSceneTransform(const glm::mat4& m) { scene_ = m; }
 
+    // How many built-in noise textures (Noise2, Noise3; one per resolution)
+    // this renderer has made so far: only programs that declare them make them.
+    std::size_t noiseTexturesMade() const { return noise2_.size() + noise3_.size(); }
+
     // Programs that read the built-in Timer uniform must redraw as time runs.
     bool usesTimer(int program) const;
 
@@ -74,11 +79,19 @@ private:
     // A depth renderbuffer of this size, attached to the bound framebuffer.
     unsigned attachDepth(int width, int height);
     void drawStep(const Draw& d, const UniformValues& values, double time, bool toScreen);
+    // Why this mesh cannot be drawn with this program (a patch mesh without
+    // tessellation shaders, a primitive the geometry shader does not take);
+    // empty when it can.
+    std::string drawProblem(const Program* prog, const MeshBuffers* mesh) const;
+    // The built-in noise texture of this resolution, made on first use and
+    // kept for the renderer's life.
+    unsigned noiseTexture(bool threeD, int res);
 
     GlApi gl_{};
     std::unique_ptr<Plan> plan_;  // a copy: the caller's plan may move (a viewer swapping scripts)
     struct TextureObject {
         unsigned id = 0;  // 0: not made, nothing needed it
+        unsigned target = 0x0DE1;  // GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP
         int width = 0, height = 0;
     };
     std::vector<TextureObject> textures_;  // per TextureDecl
@@ -88,6 +101,9 @@ private:
     std::unique_ptr<Target> screen_;
     glm::mat4 scene_{1.f};
     unsigned screenTexture_ = 0;
+    // Noise2 (unit 2) and Noise3 (unit 3), per resolution; they outlive
+    // prepare() so a reload does not make them again.
+    std::map<int, unsigned> noise2_, noise3_;
 };
 
 }  // namespace glimmer

@@ -76,6 +76,31 @@ std::vector<ActiveUniform> activeUniforms(const GlApi& gl, unsigned program) {
     return out;
 }
 
+namespace {
+
+std::string typeName(GLenum type) {
+    switch (type) {
+    case GL_FLOAT: return "float";
+    case GL_FLOAT_VEC2: return "vec2";
+    case GL_FLOAT_VEC3: return "vec3";
+    case GL_FLOAT_VEC4: return "vec4";
+    case GL_INT: return "int";
+    case GL_INT_VEC2: return "ivec2";
+    case GL_INT_VEC3: return "ivec3";
+    case GL_INT_VEC4: return "ivec4";
+    case GL_BOOL: return "bool";
+    case GL_BOOL_VEC2: return "bvec2";
+    case GL_BOOL_VEC3: return "bvec3";
+    case GL_BOOL_VEC4: return "bvec4";
+    case GL_FLOAT_MAT2: return "mat2";
+    case GL_FLOAT_MAT3: return "mat3";
+    case GL_FLOAT_MAT4: return "mat4";
+    default: return isSamplerType(type) ? "sampler" : "another type";
+    }
+}
+
+}  // namespace
+
 void checkUniformSettings(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
                           const std::string& scriptFile, Diagnostics& diags) {
     for (const auto& s : decl.uniforms) {
@@ -90,19 +115,54 @@ void checkUniformSettings(const ProgramDecl& decl, const std::vector<ActiveUnifo
         TypeInfo t = typeInfo(a->type);
         size_t want = size_t(t.components) * size_t(a->size);
         bool scalar = t.components == 1 && a->size == 1;
-        bool fits = true;
-        switch (s.form) {
-        case UniformSetting::Form::Range:
-        case UniformSetting::Form::Bool:
-        case UniformSetting::Form::Constant: fits = scalar; break;
-        case UniformSetting::Form::Color: fits = t.base == Base::Float && (t.components == 3 || t.components == 4); break;
-        case UniformSetting::Form::Array: fits = s.values.size() == want; break;
+        std::string declared = typeName(a->type) + (a->size > 1 ? fmt::format("[{}]", a->size) : "");
+        std::string prefix = fmt::format("uniform '{}' is given {} but its shader declares it {}", s.name,
+                                         formName(s.form), declared);
+        bool single = s.values.size() == 1;
+        std::string how;
+        if (t.base == Base::Other) {
+            how = "it is not set";
+        } else if (s.form == UniformSetting::Form::Bool && t.base != Base::Bool) {
+            const char* v = s.values.at(0) != 0 ? "1" : "0";
+            how = want == 1 ? fmt::format("{} is used", v) : fmt::format("every component is {}", v);
+        } else if (s.form == UniformSetting::Form::Color) {
+            if (t.base == Base::Float && (t.components == 3 || t.components == 4) && a->size == 1) continue;
+            if (scalar) how = "its luminance (0.2126 r + 0.7152 g + 0.0722 b) is used";
+            else how = "its components are used in order, missing ones 0";
+        } else if (single && !scalar) {
+            if (s.form == UniformSetting::Form::Array && want == 1) continue;
+            how = t.base == Base::Matrix ? fmt::format("the value times the identity is used")
+                                         : fmt::format("the value is copied to all {} components", want);
+        } else if (s.form == UniformSetting::Form::Array && s.values.size() != want) {
+            how = s.values.size() < want ? "the missing components are 0" : "the extra values are dropped";
+        } else {
+            continue;  // fits
         }
-        if (!fits)
-            diags.warning(scriptFile, s.loc, fmt::format("uniform '{}' is given {} but its shader declares it with "
-                                                         "{} value{}; the values are converted", s.name,
-                                                         formName(s.form), want, want == 1 ? "" : "s"));
+        diags.warning(scriptFile, s.loc, prefix + "; " + how);
     }
+}
+
+std::vector<double> convertUniform(UniformSetting::Form form, const ActiveUniform& u, const std::vector<double>& values) {
+    TypeInfo t = typeInfo(u.type);
+    size_t n = size_t(t.components) * size_t(std::max(u.size, 1));
+    if (values.empty()) return values;
+    if (form == UniformSetting::Form::Color && values.size() >= 3 && n == 1)
+        return {0.2126 * values[0] + 0.7152 * values[1] + 0.0722 * values[2]};
+    if (form == UniformSetting::Form::Bool) {
+        double b = values[0] != 0 ? 1.0 : 0.0;
+        return std::vector<double>(n, b);
+    }
+    if (values.size() == 1 && n > 1 && form != UniformSetting::Form::Color) {
+        if (t.base == Base::Matrix) {
+            int dim = t.components == 4 ? 2 : t.components == 9 ? 3 : 4;
+            std::vector<double> m(n, 0.0);
+            for (size_t e = 0; e < size_t(std::max(u.size, 1)); ++e)
+                for (int k = 0; k < dim; ++k) m[e * size_t(t.components) + size_t(k * dim + k)] = values[0];
+            return m;
+        }
+        return std::vector<double>(n, values[0]);
+    }
+    return values;
 }
 
 void uploadUniform(const GlApi& gl, const ActiveUniform& u, const std::vector<double>& values) {

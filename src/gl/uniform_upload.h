@@ -30,6 +30,17 @@ void checkUniformSettings(const ProgramDecl& decl, const std::vector<ActiveUnifo
 // in by the plan).
 void uploadUniform(const GlApi& gl, const ActiveUniform& u, const std::vector<double>& values);
 
+// The values a setting written in `form` gives a uniform of u's type, as
+// glman converted them (checkUniformSettings warns about each case):
+//   * one value (a range, a checkbox, a number, a one-item array) on a
+//     vector or array: copied to every component; on a matrix: that many
+//     times the identity (GLSL's mat3(x));
+//   * a colour on a scalar: its luminance 0.2126 r + 0.7152 g + 0.0722 b;
+//     on a vec2: r g; on a vec3: r g b; on a vec4: r g b a;
+//   * anything else: component by component, missing ones 0, extra ones dropped.
+// Ints round, bools are "not 0"; uploadUniform does that part.
+std::vector<double> convertUniform(UniformSetting::Form form, const ActiveUniform& u, const std::vector<double>& values);
+
 bool isSamplerType(GLenum type);
 
 }  // namespace glimmer

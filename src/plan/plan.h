@@ -51,11 +51,16 @@ struct ProgramDecl {
 };
 
 struct TextureDecl {
+    // Texture2D, Texture3D, CubeMap: the OpenGL target the renderer binds it to.
+    enum class Kind { Tex2D, Tex3D, Cube };
     enum class Source { File, Empty };
+    Kind kind = Kind::Tex2D;
     Source source = Source::Empty;
-    std::string path;   // resolved (File)
-    std::string shown;  // as written (File)
+    std::string path;   // resolved (File); a cube map's +x face
+    std::string shown;  // as written (File); a cube map's +x face
+    std::vector<std::string> facePaths, faceShown;  // Cube: six files, +x -x +y -y +z -z
     int width = 0, height = 0;  // Empty: as written; File: filled in when loaded
+    int depth = 0;              // Tex3D Empty: as written
     SourceLoc loc;
     bool renderTarget = false;  // some pass writes it
     bool needsDepth = false;    // some pass writing it draws depth that matters
@@ -63,12 +68,18 @@ struct TextureDecl {
 
 struct MeshDecl {
     CommandKind shape = CommandKind::QuadXY;
-    std::vector<double> params;  // the command's numbers, defaults filled in
-    std::string path;            // Obj
+    // The command's numbers, defaults filled in. GlBegin: {primitive}, an
+    // ImmediatePrimitive (geometry/mesh.h) as a number.
+    std::vector<double> params;
+    std::vector<double> points;  // Triangles, LinesAdjacency, GlBegin: x y z per point
+    std::string path;            // Obj, ObjAdj, WireObj
     SourceLoc loc;
     bool operator<(const MeshDecl& o) const {
-        return std::tie(shape, params, path) < std::tie(o.shape, o.params, o.path);
+        return std::tie(shape, params, points, path) < std::tie(o.shape, o.params, o.points, o.path);
     }
+    // True when nothing drawn with it can hide another part of it (a quad, a
+    // disk, triangles in one plane): one such draw needs no depth buffer.
+    bool flat() const;
 };
 
 struct Draw {
@@ -81,6 +92,7 @@ struct Draw {
     std::map<int, int> units;  // texture unit -> texture, as bound when the draw was written
     float lineWidth = 1.f, pointSize = 1.f;
     bool flatShading = false;
+    int patchVertices = 3;  // NumPatchVertices: GL_PATCH_VERTICES for patch meshes (OpenGL's default 3)
     SourceLoc loc;
 };
 
@@ -105,6 +117,9 @@ struct Plan {
     std::string scriptFile;
     int width = 600, height = 600;  // the screen: --size, else WindowSize, else glman's 600x600
     double timerPeriod = 10.0;
+    // The built-in noise textures' sizes (Noise2D, Noise3D; glman's 64). The
+    // renderer makes them only for programs that declare Noise2 / Noise3.
+    int noise2DRes = 64, noise3DRes = 64;
     std::vector<ProgramDecl> programs;
     std::vector<TextureDecl> textures;
     std::vector<MeshDecl> meshes;

@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "geometry/mesh.h"
 #include "plan/plan.h"
 #include "plan/uniform_forms.h"
 
@@ -73,6 +74,10 @@ public:
         }
         plan_.passes.push_back(Pass{});
         for (const auto& c : script_.commands) command(c);
+        if (imm_) {
+            diags_.warning(file(), imm_->step.draw.loc, "glBegin without glEnd; drawn as if the script ended it");
+            glEnd(nullptr);
+        }
         plan_.finalUnits = units_;
         finish();
         return std::move(plan_);
@@ -113,6 +118,10 @@ private:
     }
 
     void command(const Command& c) {
+        if (imm_ && c.kind != CommandKind::GlVertex && c.kind != CommandKind::GlEnd && c.kind != CommandKind::GlBegin)
+            diags_.warning(file(), c.loc, fmt::format("only glVertex belongs between glBegin (line {}) and glEnd; {} "
+                                                      "acts here, on what is drawn after it, not on this glBegin",
+                                                      imm_->step.draw.loc.line, c.spelled));
         switch (c.kind) {
         case CommandKind::WindowSize: numbers(c, 2, 2); break;  // read before the walk
         case CommandKind::Ortho: ortho(c); break;
@@ -184,11 +193,17 @@ private:
             break;
         case CommandKind::MessageBox: break;  // glman shows the text in a dialog; headless has no one to show it to
         case CommandKind::Gstap: gstap_ = true; break;
+        case CommandKind::Noise2D:
+        case CommandKind::Noise3D: noiseRes(c); break;
         case CommandKind::Texture2D: texture2D(c); break;
+        case CommandKind::Texture3D: texture3D(c); break;
+        case CommandKind::CubeMap: cubeMap(c); break;
         case CommandKind::RenderToTexture: renderToTexture(c); break;
         case CommandKind::Vertex: stage(c, ShaderStage::Kind::Vertex); break;
         case CommandKind::Fragment: stage(c, ShaderStage::Kind::Fragment); break;
         case CommandKind::Geometry: stage(c, ShaderStage::Kind::Geometry); break;
+        case CommandKind::TessControl: stage(c, ShaderStage::Kind::TessControl); break;
+        case CommandKind::TessEvaluation: stage(c, ShaderStage::Kind::TessEvaluation); break;
         case CommandKind::Program: program(c); break;
         case CommandKind::QuadXY:
         case CommandKind::QuadXZ:
@@ -196,22 +211,194 @@ private:
             if (numbers(c, 2, 4)) mesh(c, {num(c, 0, 0), num(c, 1, 1), num(c, 2, 1), num(c, 3, 1)});
             break;
         case CommandKind::Sphere:
+        case CommandKind::WireSphere:
             if (numbers(c, 0, 3)) mesh(c, {num(c, 0, 1), num(c, 1, 60), num(c, 2, 60)});
             break;
         case CommandKind::Torus:
+        case CommandKind::WireTorus:
             if (numbers(c, 0, 4)) mesh(c, {num(c, 0, 1), num(c, 1, .5), num(c, 2, 20), num(c, 3, 40)});
             break;
         case CommandKind::Box:
+        case CommandKind::WireBox:
             if (numbers(c, 0, 3)) {
                 double dx = num(c, 0, 2);
                 mesh(c, {dx, num(c, 1, c.args.size() == 1 ? dx : 2), num(c, 2, c.args.size() == 1 ? dx : 2)});
             }
             break;
-        case CommandKind::Obj: obj(c); break;
+        case CommandKind::Cylinder:
+        case CommandKind::WireCylinder:
+        case CommandKind::Cone:
+        case CommandKind::WireCone:
+            if (numbers(c, 0, 3) && positive(c, 2)) mesh(c, {num(c, 0, 1), num(c, 1, 1), num(c, 2, 40)});
+            break;
+        case CommandKind::DiskXY:
+            if (numbers(c, 0, 2) && positive(c, 1)) mesh(c, {num(c, 0, 1), num(c, 1, 40)});
+            break;
+        case CommandKind::Teapot:
+        case CommandKind::WireTeapot:
+            if (numbers(c, 0, 2) && positive(c, 1)) mesh(c, {num(c, 0, 1), num(c, 1, 10)});
+            break;
+        case CommandKind::QuadBox:
+            if (numbers(c, 0, 1)) mesh(c, {num(c, 0, 1)});
+            break;
+        case CommandKind::PointCloud:
+            // glman-like: `PointCloud [count [size]]`, count points in [-size, size]^3.
+            if (numbers(c, 0, 2) && countArg(c, 0, 1000000)) mesh(c, {num(c, 0, 1000), num(c, 1, 1)});
+            break;
+        case CommandKind::JitterCloud:
+            // `JitterCloud [n [size [jitter]]]`: an n^3 grid filling [-size, size]^3, each point jittered.
+            if (numbers(c, 0, 3) && countArg(c, 0, 100)) mesh(c, {num(c, 0, 10), num(c, 1, 1), num(c, 2, .5)});
+            break;
+        case CommandKind::Obj:
+        case CommandKind::ObjAdj:
+        case CommandKind::WireObj: obj(c); break;
+        case CommandKind::Triangles: pointsMesh(c, 3); break;
+        case CommandKind::LinesAdjacency: pointsMesh(c, 4); break;
+        case CommandKind::GlBegin: glBegin(c); break;
+        case CommandKind::GlVertex: glVertex(c); break;
+        case CommandKind::GlEnd: glEnd(&c); break;
+        case CommandKind::NumPatchVertices:
+            if (numbers(c, 1, 1)) {
+                double n = c.args[0].number;
+                if (n != std::floor(n) || n < 1 || n > 32)
+                    diags_.error(file(), c.args[0].loc, "NumPatchVertices takes a whole number from 1 to 32");
+                else
+                    patchVertices_ = int(n);
+            }
+            break;
         default:
             diags_.warning(file(), c.loc, fmt::format("{} is not supported yet; line ignored", c.spelled));
             break;
         }
+    }
+
+    // Argument `i`, when given, must be a whole number of at least 3 (slices, subdivisions: 1).
+    bool positive(const Command& c, size_t i) {
+        if (i >= c.args.size()) return true;
+        double v = c.args[i].number;
+        double lo = c.kind == CommandKind::Teapot || c.kind == CommandKind::WireTeapot ? 1 : 3;
+        if (v != std::floor(v) || v < lo || v > 1000) {
+            diags_.error(file(), c.args[i].loc, fmt::format("{}'s {} must be a whole number from {} to 1000", c.spelled,
+                                                            lo == 1 ? "subdivisions" : "slices", lo));
+            return false;
+        }
+        return true;
+    }
+
+    bool countArg(const Command& c, size_t i, double hi) {
+        if (i >= c.args.size()) return true;
+        double v = c.args[i].number;
+        if (v != std::floor(v) || v < 1 || v > hi) {
+            diags_.error(file(), c.args[i].loc, fmt::format("{}'s count must be a whole number from 1 to {}", c.spelled, hi));
+            return false;
+        }
+        return true;
+    }
+
+    void noiseRes(const Command& c) {
+        bool two = c.kind == CommandKind::Noise2D;
+        if (!numbers(c, 0, 1)) return;
+        double res = num(c, 0, 64);
+        double hi = two ? 4096 : 512;
+        if (res != std::floor(res) || res < 1 || res > hi) {
+            diags_.error(file(), c.loc, fmt::format("{}'s resolution must be a whole number from 1 to {}", c.spelled, hi));
+            return;
+        }
+        (two ? plan_.noise2DRes : plan_.noise3DRes) = int(res);
+    }
+
+    // One point from an `[x y z]` group (a 2-number group lies at z = 0).
+    std::optional<glm::dvec3> point(const Command& c, const Arg& a) {
+        if (a.kind != Arg::Kind::Array || a.items.size() < 2 || a.items.size() > 3) {
+            diags_.error(file(), a.loc, fmt::format("{} takes points written [x y z]; '{}' is not one", c.spelled,
+                                                    a.isGroup() ? std::string("a group of ") + std::to_string(a.items.size()) : a.text));
+            return std::nullopt;
+        }
+        for (const auto& i : a.items)
+            if (i.kind != Arg::Kind::Number) {
+                diags_.error(file(), i.loc, fmt::format("{} takes numbers; '{}' is not a number", c.spelled, i.text));
+                return std::nullopt;
+            }
+        return glm::dvec3(a.items[0].number, a.items[1].number, a.items.size() > 2 ? a.items[2].number : 0.0);
+    }
+
+    // Triangles (3 points a primitive), LinesAdjacency (4).
+    void pointsMesh(const Command& c, size_t per) {
+        std::vector<double> pts;
+        for (const auto& a : c.args) {
+            auto p = point(c, a);
+            if (!p) return;
+            pts.insert(pts.end(), {p->x, p->y, p->z});
+        }
+        size_t n = pts.size() / 3;
+        if (n < per) {
+            diags_.error(file(), c.loc, fmt::format("{} needs {} points [x y z], got {}", c.spelled, per, n));
+            return;
+        }
+        if (n % per)
+            diags_.warning(file(), c.args[n - n % per].loc,
+                           fmt::format("{} takes points in groups of {}; the last {} ignored", c.spelled, per,
+                                       n % per == 1 ? std::string("one is") : std::to_string(n % per) + " are"));
+        mesh(c, {}, {}, std::move(pts));
+    }
+
+    void glBegin(const Command& c) {
+        if (imm_) {
+            diags_.warning(file(), c.loc, fmt::format("glBegin inside the glBegin of line {}; that one ends here",
+                                                      imm_->step.draw.loc.line));
+            glEnd(nullptr);
+        }
+        Immediate b;
+        b.step = drawStep(c.loc);
+        std::optional<ImmediatePrimitive> prim;
+        if (c.args.size() == 1 && c.args[0].kind == Arg::Kind::Word) prim = parseImmediatePrimitive(c.args[0].text);
+        if (!prim) {
+            diags_.error(file(), c.args.empty() ? c.loc : c.args[0].loc,
+                         fmt::format("glBegin takes one primitive: gl_points, gl_lines, gl_line_strip, gl_line_loop, "
+                                     "gl_triangles, gl_triangle_strip, gl_triangle_fan, gl_quads, gl_quad_strip, "
+                                     "gl_polygon or gl_patches{}",
+                                     c.args.empty() ? std::string() : "; not '" + c.args[0].text + "'"));
+            b.valid = false;  // its glVertex lines are swallowed up to the glEnd
+        } else {
+            b.primitive = *prim;
+        }
+        imm_ = std::move(b);
+    }
+
+    void glVertex(const Command& c) {
+        if (!imm_) {
+            diags_.warning(file(), c.loc, "glVertex outside glBegin ... glEnd; ignored");
+            return;
+        }
+        if (!numbers(c, 2, 4)) return;
+        double w = num(c, 3, 1);
+        if (w == 0) {
+            diags_.error(file(), c.args[3].loc, "glVertex with w = 0 is a point at infinity; ignored");
+            return;
+        }
+        imm_->points.insert(imm_->points.end(), {num(c, 0, 0) / w, num(c, 1, 0) / w, num(c, 2, 0) / w});
+    }
+
+    // `end` is null when the block is closed by a new glBegin or the end of the script.
+    void glEnd(const Command* end) {
+        if (!imm_) {
+            if (end) diags_.warning(file(), end->loc, "glEnd without glBegin; ignored");
+            return;
+        }
+        Immediate b = std::move(*imm_);
+        imm_.reset();
+        if (!b.valid) return;
+        if (b.points.empty()) {
+            diags_.warning(file(), b.step.draw.loc, "glBegin ... glEnd with no glVertex draws nothing");
+            return;
+        }
+        MeshDecl m;
+        m.shape = CommandKind::GlBegin;
+        m.params = {double(int(b.primitive))};
+        m.points = std::move(b.points);
+        m.loc = b.step.draw.loc;
+        b.step.draw.mesh = meshIndex(m);
+        pass().steps.push_back(b.step);
     }
 
     std::optional<glm::vec4> colorArgs(const Command& c) {
@@ -281,45 +468,130 @@ private:
         return int(a.number);
     }
 
+    // Finds a texture file; false (reported) when it is not there.
+    bool textureFile(const Arg& a, std::string& path) {
+        std::vector<std::string> tried;
+        path = resolveFile(file(), a.text, options_.includeDirs, &tried);
+        if (path.empty()) notFound(a.loc, "texture", a.text, tried);
+        return !path.empty();
+    }
+
+    // Binds `t` to `unit` where the command stands. Scripts re-bind the same
+    // file many times (one skybox face per quad): one texture per file (per
+    // six files for a cube map) is shared.
+    void bindTexture(int unit, TextureDecl t) {
+        if (t.source == TextureDecl::Source::File) {
+            for (size_t i = 0; i < plan_.textures.size(); ++i) {
+                const TextureDecl& o = plan_.textures[i];
+                if (o.source == TextureDecl::Source::File && o.kind == t.kind && o.path == t.path &&
+                    o.facePaths == t.facePaths) {
+                    units_[unit] = int(i);
+                    return;
+                }
+            }
+        }
+        plan_.textures.push_back(std::move(t));
+        units_[unit] = int(plan_.textures.size()) - 1;
+    }
+
+    // Checks `w h [d]` of an empty texture.
+    bool sizeArgs(const Command& c, size_t first, size_t n) {
+        for (size_t i = first; i < first + n; ++i) {
+            double v = c.args[i].number;
+            double hi = n == 3 ? 2048 : 16384;
+            if (v != std::floor(v) || v < 1 || v > hi) {
+                diags_.error(file(), c.args[i].loc, fmt::format("a texture's size must be between 1 and {} each way", hi));
+                return false;
+            }
+        }
+        return true;
+    }
+
+    bool allNumbers(const Command& c, size_t first) {
+        for (size_t i = first; i < c.args.size(); ++i)
+            if (c.args[i].kind != Arg::Kind::Number) return false;
+        return true;
+    }
+
     void texture2D(const Command& c) {
+        const char* usage = "Texture2D needs a unit and a file, or a unit, a width and a height";
         if (c.args.empty()) {
-            diags_.error(file(), c.loc, "Texture2D needs a unit and a file, or a unit, a width and a height");
+            diags_.error(file(), c.loc, usage);
             return;
         }
         int unit = unitArg(c, c.args[0]);
         if (unit < 0) return;
         TextureDecl t;
+        t.kind = TextureDecl::Kind::Tex2D;
         t.loc = c.loc;
         if (c.args.size() == 2 && c.args[1].kind == Arg::Kind::Word) {
             t.source = TextureDecl::Source::File;
             t.shown = c.args[1].text;
-            std::vector<std::string> tried;
-            t.path = resolveFile(file(), t.shown, options_.includeDirs, &tried);
-            if (t.path.empty()) {
-                notFound(c.args[1].loc, "texture", t.shown, tried);
-                return;
-            }
-            // Scripts re-bind the same file many times (one skybox face per
-            // quad): share one texture per file.
-            for (size_t i = 0; i < plan_.textures.size(); ++i) {
-                if (plan_.textures[i].source == TextureDecl::Source::File && plan_.textures[i].path == t.path) {
-                    units_[unit] = int(i);
-                    return;
-                }
-            }
-        } else if (c.args.size() == 3 && c.args[1].kind == Arg::Kind::Number && c.args[2].kind == Arg::Kind::Number) {
+            if (!textureFile(c.args[1], t.path)) return;
+        } else if (c.args.size() == 3 && allNumbers(c, 1)) {
+            if (!sizeArgs(c, 1, 2)) return;
             t.width = int(c.args[1].number);
             t.height = int(c.args[2].number);
-            if (t.width < 1 || t.height < 1 || t.width > 16384 || t.height > 16384) {
-                diags_.error(file(), c.args[1].loc, "a texture's size must be between 1 and 16384 each way");
-                return;
-            }
         } else {
-            diags_.error(file(), c.loc, "Texture2D needs a unit and a file, or a unit, a width and a height");
+            diags_.error(file(), c.loc, usage);
             return;
         }
-        plan_.textures.push_back(t);
-        units_[unit] = int(plan_.textures.size()) - 1;
+        bindTexture(unit, std::move(t));
+    }
+
+    void texture3D(const Command& c) {
+        const char* usage = "Texture3D needs a unit and a raw .tex file, or a unit, a width, a height and a depth";
+        if (c.args.empty()) {
+            diags_.error(file(), c.loc, usage);
+            return;
+        }
+        int unit = unitArg(c, c.args[0]);
+        if (unit < 0) return;
+        TextureDecl t;
+        t.kind = TextureDecl::Kind::Tex3D;
+        t.loc = c.loc;
+        if (c.args.size() == 2 && c.args[1].kind == Arg::Kind::Word) {
+            t.source = TextureDecl::Source::File;
+            t.shown = c.args[1].text;
+            if (!textureFile(c.args[1], t.path)) return;
+        } else if (c.args.size() == 4 && allNumbers(c, 1)) {
+            if (!sizeArgs(c, 1, 3)) return;
+            t.width = int(c.args[1].number);
+            t.height = int(c.args[2].number);
+            t.depth = int(c.args[3].number);
+        } else {
+            diags_.error(file(), c.loc, usage);
+            return;
+        }
+        bindTexture(unit, std::move(t));
+    }
+
+    void cubeMap(const Command& c) {
+        if (c.args.size() != 7) {
+            diags_.error(file(), c.loc, fmt::format("CubeMap needs a unit and six files, +x -x +y -y +z -z; got {} "
+                                                    "argument{}", c.args.size(), c.args.size() == 1 ? "" : "s"));
+            return;
+        }
+        int unit = unitArg(c, c.args[0]);
+        if (unit < 0) return;
+        TextureDecl t;
+        t.kind = TextureDecl::Kind::Cube;
+        t.source = TextureDecl::Source::File;
+        t.loc = c.loc;
+        for (size_t i = 1; i < 7; ++i) {
+            if (c.args[i].kind != Arg::Kind::Word) {
+                diags_.error(file(), c.args[i].loc, fmt::format("CubeMap needs six file names; '{}' is not one",
+                                                                c.args[i].text));
+                return;
+            }
+            std::string path;
+            if (!textureFile(c.args[i], path)) return;
+            t.facePaths.push_back(path);
+            t.faceShown.push_back(c.args[i].text);
+        }
+        t.path = t.facePaths[0];
+        t.shown = t.faceShown[0];
+        bindTexture(unit, std::move(t));
     }
 
     void notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried) {
@@ -341,6 +613,12 @@ private:
                 return;
             }
             const TextureDecl& t = plan_.textures[it->second];
+            if (t.kind != TextureDecl::Kind::Tex2D) {
+                diags_.error(file(), a.loc, fmt::format("unit {} holds a {}; render into an empty texture made with "
+                                                        "Texture2D {} width height", unit,
+                                                        t.kind == TextureDecl::Kind::Cube ? "cube map" : "3-D texture", unit));
+                return;
+            }
             // An image's size is only known once it is loaded, so this check
             // comes before the size check, which would otherwise misreport it.
             if (t.source == TextureDecl::Source::File) {
@@ -401,7 +679,7 @@ private:
 
     void obj(const Command& c) {
         if (c.args.size() != 1 || c.args[0].kind != Arg::Kind::Word) {
-            diags_.error(file(), c.loc, "Obj takes one .obj file name");
+            diags_.error(file(), c.loc, fmt::format("{} takes one .obj file name", c.spelled));
             return;
         }
         std::vector<std::string> tried;
@@ -413,20 +691,18 @@ private:
         mesh(c, {}, path);
     }
 
-    void mesh(const Command& c, std::vector<double> params, const std::string& path = {}) {
-        MeshDecl m;
-        m.shape = c.kind;
-        m.params = std::move(params);
-        m.path = path;
-        m.loc = c.loc;
+    int meshIndex(const MeshDecl& m) {
         auto [it, added] = meshIndex_.try_emplace(m, int(plan_.meshes.size()));
         if (added) plan_.meshes.push_back(m);
+        return it->second;
+    }
 
+    // A draw with the state in force now; its mesh is filled in by the caller.
+    Step drawStep(SourceLoc loc) {
         auto [w, h] = aspectSize();
         Step s;
         s.kind = Step::Kind::Draw;
         Draw& d = s.draw;
-        d.mesh = it->second;
         d.program = program_;
         d.projection = projection_.matrix(w, h);
         d.modelView = view_ * model_;
@@ -436,7 +712,21 @@ private:
         d.lineWidth = lineWidth_;
         d.pointSize = pointSize_;
         d.flatShading = flat_;
-        d.loc = c.loc;
+        d.patchVertices = patchVertices_;
+        d.loc = loc;
+        return s;
+    }
+
+    void mesh(const Command& c, std::vector<double> params, const std::string& path = {},
+              std::vector<double> points = {}) {
+        MeshDecl m;
+        m.shape = c.kind;
+        m.params = std::move(params);
+        m.points = std::move(points);
+        m.path = path;
+        m.loc = c.loc;
+        Step s = drawStep(c.loc);
+        s.draw.mesh = meshIndex(m);
         pass().steps.push_back(s);
     }
 
@@ -469,9 +759,7 @@ private:
             for (const auto& s : p.steps) {
                 if (s.kind != Step::Kind::Draw) continue;
                 ++draws;
-                CommandKind shape = plan_.meshes[s.draw.mesh].shape;
-                if (shape != CommandKind::QuadXY && shape != CommandKind::QuadXZ && shape != CommandKind::QuadYZ)
-                    solid = true;
+                if (!plan_.meshes[s.draw.mesh].flat()) solid = true;
                 for (int t : drawReads(s.draw)) p.reads.insert(t);
             }
             // One flat quad cannot hide anything; depth only matters with more.
@@ -520,10 +808,52 @@ private:
     std::map<int, int> units_;
     std::map<ShaderStage::Kind, ShaderStage> stages_;
     int program_ = -1;
+    int patchVertices_ = 3;
     std::map<MeshDecl, int> meshIndex_;
+    // An open glBegin: the draw as the state stood at glBegin, and its vertices.
+    struct Immediate {
+        Step step;
+        ImmediatePrimitive primitive = ImmediatePrimitive::Points;
+        std::vector<double> points;
+        bool valid = true;
+    };
+    std::optional<Immediate> imm_;
 };
 
 }  // namespace
+
+bool MeshDecl::flat() const {
+    switch (shape) {
+    case CommandKind::QuadXY:
+    case CommandKind::QuadXZ:
+    case CommandKind::QuadYZ:
+    case CommandKind::DiskXY: return true;
+    case CommandKind::Triangles:
+    case CommandKind::GlBegin: {
+        // All points in one plane: the plane through the first three points
+        // that span one, within a small part of the points' extent.
+        size_t n = points.size() / 3;
+        auto p = [&](size_t i) { return glm::dvec3(points[3 * i], points[3 * i + 1], points[3 * i + 2]); };
+        if (n < 4) return true;
+        glm::dvec3 lo = p(0), hi = p(0);
+        for (size_t i = 1; i < n; ++i) {
+            lo = glm::min(lo, p(i));
+            hi = glm::max(hi, p(i));
+        }
+        double eps = 1e-6 * std::max(glm::length(hi - lo), 1e-30);
+        glm::dvec3 normal(0.0);
+        for (size_t i = 1; i + 1 < n && glm::length(normal) <= eps * eps; ++i)
+            for (size_t j = i + 1; j < n && glm::length(normal) <= eps * eps; ++j)
+                normal = glm::cross(p(i) - p(0), p(j) - p(0));
+        if (glm::length(normal) <= eps * eps) return true;  // all on one line
+        normal = glm::normalize(normal);
+        for (size_t i = 1; i < n; ++i)
+            if (std::abs(glm::dot(p(i) - p(0), normal)) > eps) return false;
+        return true;
+    }
+    default: return false;
+    }
+}
 
 bool Plan::screenNeeded() const {
     for (const auto& p : passes)

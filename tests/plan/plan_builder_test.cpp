@@ -470,13 +470,13 @@ TEST_F(PlanTest, PopMatrixWithoutPushIsWarned) {
                         glm::translate(glm::mat4(1), glm::vec3(1, 0, 0))));
 }
 
-TEST_F(PlanTest, UnsupportedCommandsAreWarnedAndDrawNothing) {
-    Planned p = run("Teapot\nCubeMap 4 a b c d e f\nQuadXY 0 1\n");
-    EXPECT_EQ(messages(p.diags), (V{"1:1: warning: Teapot is not supported yet; line ignored",
-                                    "2:1: warning: CubeMap is not supported yet; line ignored"}));
+TEST_F(PlanTest, FormerlyUnsupportedCommandsNowDraw) {
+    // Teapot and CubeMap were "not supported yet" before glman parity.
+    Planned p = run("Teapot\nCubeMap 4 img.bmp img.bmp img.bmp img.bmp img.bmp img.bmp\nQuadXY 0 1\n");
+    EXPECT_EQ(messages(p.diags), V{});
     ASSERT_EQ(p.plan.passes.size(), 1u);
-    EXPECT_EQ(draws(p.plan.passes[0]).size(), 1u);
-    EXPECT_EQ(p.plan.meshes.size(), 1u);
+    EXPECT_EQ(draws(p.plan.passes[0]).size(), 2u);
+    EXPECT_EQ(p.plan.meshes.size(), 2u);
 }
 
 TEST_F(PlanTest, ArityErrors) {

@@ -1,0 +1,4 @@
+#version 330 compatibility
+void main() {
+    gl_FragColor = gl_Color;
+}

@@ -1,0 +1,98 @@
+// `glimmer check`-style runs (load, plan, prepare everything) and the
+// diagnostics they give: every GLIB command known, NVIDIA-only geometry
+// shaders reported on their line, uniform forms that do not fit their type,
+// and the built-in noise made only when a program declares it.
+#include <fstream>
+#include <set>
+
+#include <unistd.h>
+
+#include <gtest/gtest.h>
+
+#include "glman_harness.h"
+
+using namespace glimmer;
+using namespace glimmer::glmantest;
+
+namespace {
+
+TEST(GlmanCheck, EveryCommandOfGlibNotesIsSupported) {
+    auto r = runPipeline(script("all_commands"), true, true);
+    ASSERT_TRUE(r->renderer) << r->printed();
+    for (const auto& d : r->diags.all())
+        EXPECT_EQ(d.message.find("not supported"), std::string::npos) << d.loc.line << ": " << d.message;
+    EXPECT_EQ(r->diags.errorCount(), 0) << r->printed();
+    EXPECT_EQ(r->diags.warningCount(), 0) << r->printed();
+    EXPECT_TRUE(r->prepared) << r->printed();
+    // Every command word of the language appears in the script.
+    std::set<CommandKind> used;
+    for (const auto& c : r->loaded.script.commands) used.insert(c.kind);
+    for (int k = int(CommandKind::WindowSize); k <= int(CommandKind::QuadBox); ++k)
+        EXPECT_TRUE(used.count(CommandKind(k))) << "all_commands.glib lacks " << commandName(CommandKind(k));
+}
+
+TEST(GlmanCheck, GlPositionInIsMesasErrorOnTheShadersLine) {
+    auto r = runPipeline(script("positionin"), true, false);
+    ASSERT_TRUE(r->renderer) << r->printed();
+    EXPECT_FALSE(r->prepared);
+    bool found = false;
+    for (const auto& d : r->diags.all()) {
+        if (d.severity != Severity::Error) continue;
+        EXPECT_EQ(std::filesystem::path(d.file).filename(), "positionin.geom") << d.message;
+        EXPECT_EQ(d.loc.line, 8) << d.message;
+        if (d.message.find("gl_PositionIn") != std::string::npos) found = true;
+    }
+    EXPECT_TRUE(found) << r->printed();
+}
+
+TEST(GlmanCheck, UniformFormsThatDoNotFitAreWarnedAndConverted) {
+    auto r = runPipeline(script("uniform_forms"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              (std::vector<std::string>{
+                  "uniform 'uFlag' is given a checkbox but its shader declares it float; 1 is used",
+                  "uniform 'uTint' is given a range but its shader declares it vec3; the value is copied to all 3 "
+                  "components",
+                  "uniform 'uGrey' is given a colour but its shader declares it float; its luminance (0.2126 r + "
+                  "0.7152 g + 0.0722 b) is used"}));
+    std::vector<int> lines;
+    for (const auto& d : r->diags.all()) lines.push_back(d.loc.line);
+    EXPECT_EQ(lines, (std::vector<int>{8, 8, 8}));
+    // Left third: uFlag = 1; middle: vec3(.5); right: luminance of red.
+    EXPECT_EQ(int(pixel(r->screen, 10, 48)[0]), 255);
+    EXPECT_NEAR(int(pixel(r->screen, 48, 48)[1]), 128, 1);
+    EXPECT_NEAR(int(pixel(r->screen, 86, 48)[2]), 54, 1);  // 0.2126 * 255
+}
+
+TEST(GlmanCheck, NoiseIsMadeOnlyForProgramsThatDeclareIt) {
+    auto plain = runPipeline(script("quad_texture"), true, true);
+    ASSERT_TRUE(plain->prepared) << plain->printed();
+    EXPECT_EQ(plain->renderer->noiseTexturesMade(), 0u);
+    auto noisy = runPipeline(script("noise"), true, true);
+    ASSERT_TRUE(noisy->prepared) << noisy->printed();
+    EXPECT_EQ(noisy->renderer->noiseTexturesMade(), 2u);
+    // A second prepare of the same renderer reuses them.
+    SourceTexts sources;
+    ASSERT_TRUE(noisy->renderer->prepare(noisy->loaded.plan, noisy->diags, sources));
+    EXPECT_EQ(noisy->renderer->noiseTexturesMade(), 2u);
+}
+
+TEST(GlmanCheck, ShapesAProgramCannotDrawAreWarnedNotDrawn) {
+    // A tessellation program given a sphere, a patch without one.
+    std::string dir = dataDir();
+    auto path = std::filesystem::temp_directory_path() / ("glimmer_mismatch_" + std::to_string(::getpid()) + ".glib");
+    std::ofstream(path) << "WindowSize 32 32\n"
+                           "glBegin gl_patches\nglVertex 0 0 0\nglVertex 1 0 0\nglVertex 0 1 0\nglEnd\n"
+                           "Vertex " << dir << "/pass.vert\nGeometry " << dir << "/adj.geom\nFragment " << dir
+                        << "/patch.frag\nProgram Adj\nSphere\n";
+    auto r = runPipeline(path.string(), true, true);
+    std::filesystem::remove(path);
+    EXPECT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              (std::vector<std::string>{
+                  "patches (glBegin gl_patches) need a Program with a TessEvaluation shader; not drawn",
+                  "the geometry shader of Program Adj takes triangles_adjacency, but this shape is triangles; not "
+                  "drawn"}));
+}
+
+}  // namespace
