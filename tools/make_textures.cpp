@@ -17,5 +17,11 @@ int main(int argc, char** argv) {
         return 1;
     }
     std::printf("wrote %s\n", path.c_str());
+    const std::string hdr = std::string(argv[1]) + "/hdr_scene.hdr";
+    if (!glimmer::writeHdr(hdr, glimmer::makeHdrScene(512, 512), error)) {
+        std::fprintf(stderr, "glimmer-textures: %s\n", error.c_str());
+        return 1;
+    }
+    std::printf("wrote %s\n", hdr.c_str());
     return 0;
 }

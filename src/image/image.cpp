@@ -4,6 +4,9 @@
 #include <stb/stb_image_write.h>
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <cctype>
 #include <cstring>
 #include <fstream>
@@ -196,6 +199,79 @@ bool writeBmp(const std::string& path, const Image& img, std::string& error) {
         return false;
     }
     return true;
+}
+
+namespace {
+
+// Any image as float RGBA, row 0 at the top.
+std::vector<float> asFloats(const Image& img) {
+    if (img.type == Image::Type::F32) return img.f32;
+    std::vector<float> f(img.u8.size());
+    for (size_t i = 0; i < f.size(); ++i) f[i] = img.u8[i] / 255.f;
+    return f;
+}
+
+bool consistent(const Image& img) {
+    size_t n = size_t(img.width) * size_t(img.height) * 4;
+    return img.width > 0 && img.height > 0 && (img.type == Image::Type::F32 ? img.f32.size() : img.u8.size()) == n;
+}
+
+}  // namespace
+
+bool writeHdr(const std::string& path, const Image& img, std::string& error) {
+    if (!consistent(img)) {
+        error = "writeHdr: empty or inconsistent image";
+        return false;
+    }
+    std::vector<float> f = asFloats(img);
+    if (!stbi_write_hdr(path.c_str(), img.width, img.height, 4, f.data())) {
+        error = "cannot write " + path;
+        return false;
+    }
+    return true;
+}
+
+bool writePfm(const std::string& path, const Image& img, std::string& error) {
+    if (!consistent(img)) {
+        error = "writePfm: empty or inconsistent image";
+        return false;
+    }
+    std::FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) {
+        error = "cannot write " + path;
+        return false;
+    }
+    std::vector<float> px = asFloats(img);
+    // "PF" is colour; a negative scale means little-endian floats.
+    std::fprintf(f, "PF\n%d %d\n-1.0\n", img.width, img.height);
+    std::vector<float> row(size_t(img.width) * 3);
+    bool ok = true;
+    for (int y = img.height - 1; y >= 0 && ok; --y) {  // PFM stores the bottom row first
+        for (int x = 0; x < img.width; ++x)
+            for (int c = 0; c < 3; ++c) row[size_t(x) * 3 + size_t(c)] = px[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + size_t(c)];
+        ok = std::fwrite(row.data(), sizeof(float), row.size(), f) == row.size();
+    }
+    ok = (std::fclose(f) == 0) && ok;
+    if (!ok) error = "cannot write " + path;
+    return ok;
+}
+
+bool writeImage(const std::string& path, const Image& img, std::string& error) {
+    auto ext = std::filesystem::path(path).extension().string();
+    for (auto& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    if (ext == ".hdr") return writeHdr(path, img, error);
+    if (ext == ".pfm") return writePfm(path, img, error);
+    if (ext == ".bmp") return writeBmp(path, img, error);
+    if (ext == ".png") {
+        if (img.type == Image::Type::U8) return writePng(path, img, error);
+        // A float picture as PNG: clamped to [0,1] and rounded, as a screen would show it.
+        Image u8 = Image::rgba8(img.width, img.height);
+        for (size_t i = 0; i < img.f32.size(); ++i)
+            u8.u8[i] = std::uint8_t(std::lround(std::clamp(double(img.f32[i]), 0.0, 1.0) * 255.0));
+        return writePng(path, u8, error);
+    }
+    error = "cannot write '" + path + "': use .png, .hdr, .pfm or .bmp";
+    return false;
 }
 
 }  // namespace glimmer

@@ -36,6 +36,12 @@ bool decodeTex2D(const std::vector<std::uint8_t>& bytes, Image& out, std::string
 bool writePng(const std::string& path, const Image& img, std::string& error);
 bool writeBmp(const std::string& path, const Image& img, std::string& error);
 std::vector<std::uint8_t> encodeBmp(const Image& img);
+// Float pictures: Radiance .hdr (RGBE, through stb) and PFM (32-bit float
+// RGB, bottom row first as the format says). Both take U8 or F32 images.
+bool writeHdr(const std::string& path, const Image& img, std::string& error);
+bool writePfm(const std::string& path, const Image& img, std::string& error);
+// Chooses the writer by the extension: .png, .bmp, .hdr, .pfm.
+bool writeImage(const std::string& path, const Image& img, std::string& error);
 
 // glman's 3-D raw .tex: three little-endian int32 sizes (w, h, d), then
 // w*h*d RGBA texels as bytes or float32 (told apart by the file size), in

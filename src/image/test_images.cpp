@@ -80,4 +80,43 @@ Image makeNoiseImage(int width, int height, unsigned seed) {
     return img;
 }
 
+Image makeHdrScene(int width, int height) {
+    Image img = Image::rgbaF32(width, height);
+    auto put = [&](int x, int y, float r, float g, float b) {
+        if (x < 0 || y < 0 || x >= width || y >= height) return;
+        float* p = &img.f32[(size_t(y) * size_t(width) + size_t(x)) * 4];
+        p[0] = r;
+        p[1] = g;
+        p[2] = b;
+    };
+    // The ground: a dim vertical gradient with faint tiles, never black, so
+    // a blur's error shows everywhere, not only near the lights.
+    for (int y = 0; y < height; ++y)
+        for (int x = 0; x < width; ++x) {
+            float g = 0.02f + 0.04f * float(y) / float(std::max(1, height - 1));
+            float tile = ((x / 32 + y / 32) % 2) ? 0.005f : 0.f;
+            put(x, y, g + tile, g + tile, g * 1.2f + tile);
+            img.f32[(size_t(y) * size_t(width) + size_t(x)) * 4 + 3] = 1.f;
+        }
+    // Emitters: discs of rising brightness along the top, in four colours.
+    const float levels[] = {1.5f, 2.f, 3.f, 5.f, 8.f, 15.f};
+    const float tints[][3] = {{1, .9f, .7f}, {1, .4f, .2f}, {.3f, .6f, 1}, {.5f, 1, .4f}, {1, 1, 1}, {1, .8f, .9f}};
+    for (int i = 0; i < 6; ++i) {
+        int cx = int((i + 0.5) * width / 6.0), cy = height / 4;
+        int r = std::max(1, width / 40);
+        for (int y = -r; y <= r; ++y)
+            for (int x = -r; x <= r; ++x)
+                if (x * x + y * y <= r * r)
+                    put(cx + x, cy + y, levels[i] * tints[i][0], levels[i] * tints[i][1], levels[i] * tints[i][2]);
+    }
+    // Bars: a thin bright line and a wide dim one, for a blur's shape along one axis.
+    for (int x = width / 8; x < width * 7 / 8; ++x) {
+        put(x, height / 2, 10.f, 10.f, 10.f);
+        for (int t = 0; t < std::max(1, height / 32); ++t) put(x, height * 3 / 4 + t, 1.5f, 1.2f, 1.f);
+    }
+    // The firefly: one texel far brighter than anything else.
+    put(width * 3 / 4, height * 5 / 8, 1000.f, 1000.f, 1000.f);
+    return img;
+}
+
 }  // namespace glimmer

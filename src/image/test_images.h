@@ -12,4 +12,10 @@ Image makeGridImage(int width, int height);
 // pixel tests where every texel differs from its neighbours.
 Image makeNoiseImage(int width, int height, unsigned seed);
 
+// The bloom lab's HDR input, in the seed's spirit: a dark ground (about
+// 0.02 to 0.06), bright emitters from 1.5 to 15 (discs and bars), and one
+// tiny spot of 1000 that makes fireflies in careless blurs. RGBA float,
+// alpha 1. Deterministic.
+Image makeHdrScene(int width, int height);
+
 }  // namespace glimmer
