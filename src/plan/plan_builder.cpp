@@ -747,10 +747,15 @@ private:
     }
 
     void finish() {
-        // Passes that draw nothing do nothing.
+        // Passes that draw nothing do nothing. The first screen pass has no
+        // RenderToTexture line of its own: it is known by its first draw.
         std::vector<Pass> kept;
-        for (auto& p : plan_.passes)
-            if (!p.steps.empty()) kept.push_back(std::move(p));
+        for (auto& p : plan_.passes) {
+            if (p.steps.empty()) continue;
+            for (const auto& s : p.steps)
+                if (p.loc.line == 0 && s.kind == Step::Kind::Draw) p.loc = s.draw.loc;
+            kept.push_back(std::move(p));
+        }
         plan_.passes = std::move(kept);
 
         for (auto& p : plan_.passes) {

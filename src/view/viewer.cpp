@@ -180,8 +180,12 @@ private:
         for (const auto& p : watch_.paths()) files.insert(p);  // keep what a broken edit may still need
         for (const auto& prog : plan.programs)
             for (const auto& st : prog.stages) files.insert(st.path);
-        for (const auto& t : plan.textures)
+        for (const auto& t : plan.textures) {
             if (t.source == TextureDecl::Source::File) files.insert(t.path);
+            files.insert(t.facePaths.begin(), t.facePaths.end());  // all six faces of a cube map
+        }
+        for (const auto& m : plan.meshes)
+            if (!m.path.empty()) files.insert(m.path);  // OBJ models
         std::vector<std::string> list(files.begin(), files.end());
         if (list != watch_.paths()) watch_.watch(list);
     }
