@@ -27,6 +27,8 @@ struct RenderOptions : CommonOptions {
     std::vector<std::string> dumps;  // UNIT=file.png
     double time = 0;
     bool timings = false;
+    bool health = false;  // print the numeric health of every target
+    bool strict = false;  // and exit 1 if any holds NaN, Inf, negatives or values above 65504
 };
 
 struct SheetOptions : CommonOptions {

@@ -34,9 +34,13 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     CLI::App* sub = app.add_subcommand("render", "render a script headless to a PNG");
     addCommon(sub, o);
     sub->add_option("-o,--output", o.output, "the PNG to write");
-    sub->add_option("--dump", o.dumps, "UNIT=FILE.png: also write the texture on that unit (repeatable)");
+    sub->add_option("--dump", o.dumps, "UNIT=FILE: also write the texture on that unit; .png, .hdr or .pfm "
+                                       "(float targets keep their values in .hdr and .pfm) (repeatable)");
     sub->add_option("--time", o.time, "seconds since start, for the Timer uniform");
     sub->add_flag("--timings", o.timings, "print start-up, compile, render and write times");
+    sub->add_flag("--health", o.health, "report NaN, Inf, negative, above-65504 and clipped values per target");
+    sub->add_flag("--strict", o.strict, "like --health, and exit 1 if any target holds NaN, Inf, negatives or "
+                                        "values above 65504");
 }
 
 void addCheckCommand(CLI::App& app, CommonOptions& o) {

@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "app/numeric_health.h"
 #include "app/session.h"
 #include "image/image.h"
 
@@ -32,7 +33,7 @@ int runRender(const RenderOptions& o) {
     for (const auto& text : o.dumps) {
         Dump d;
         if (!parseDump(text, d)) {
-            std::cerr << fmt::format("glimmer: error: --dump '{}' is not UNIT=FILE.png with a unit from 0 to 31\n", text);
+            std::cerr << fmt::format("glimmer: error: --dump '{}' is not UNIT=FILE with a unit from 0 to 31\n", text);
             return kExitUsage;
         }
         dumps.push_back(d);
@@ -59,22 +60,36 @@ int runRender(const RenderOptions& o) {
     }
     for (const auto& d : dumps) {
         auto it = s.loaded.plan.finalUnits.find(d.unit);
-        Image img = it == s.loaded.plan.finalUnits.end() ? Image{} : s.renderer->readTexture(it->second);
+        Image img;
+        if (it != s.loaded.plan.finalUnits.end())
+            img = s.renderer->isFloatTexture(it->second) ? s.renderer->readTextureFloat(it->second)
+                                                         : s.renderer->readTexture(it->second);
         if (img.empty()) {
             std::cerr << fmt::format("glimmer: error: --dump {}: no texture on unit {}\n", d.unit, d.unit);
             return kExitUsage;
         }
-        if (!writePng(d.file, img, why)) {
+        if (!writeImage(d.file, img, why)) {
             std::cerr << "glimmer: error: " << why << "\n";
             return kExitScriptError;
         }
     }
     auto t2 = Clock::now();
+    bool bad = false;
+    if (o.health || o.strict) {
+        for (const auto& h : measureHealth(*s.renderer, s.loaded.plan)) {
+            std::cerr << formatHealth(h) << "\n";
+            bad |= h.bad();
+        }
+    }
     if (o.timings) {
         auto ms = [](auto a, auto b) { return std::chrono::duration<double, std::milli>(b - a).count(); };
         std::cerr << fmt::format("{} on {}: start-up {:.1f} ms, compile {:.1f} ms, render {:.1f} ms, write {:.1f} ms\n",
                                  s.context->name(), s.renderer->rendererName(), s.startupMs, s.compileMs, ms(t0, t1),
                                  ms(t1, t2));
+    }
+    if (o.strict && bad) {
+        std::cerr << "glimmer: error: --strict: a target holds NaN, Inf, negative or out-of-range values\n";
+        return kExitScriptError;
     }
     return kExitOk;
 }

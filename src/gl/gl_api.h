@@ -23,7 +23,7 @@ namespace glimmer {
     X(ClearDepth) X(DepthFunc) X(DepthMask) X(Finish) X(Flush) X(ReadPixels) X(PixelStorei)             \
     X(MatrixMode) X(LoadMatrixf) X(Color4f) X(LineWidth) X(PointSize) X(ShadeModel)                     \
     X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexImage3D) X(TexParameteri) X(GetTexImage) \
-    X(ActiveTexture) X(ClientActiveTexture)                                                              \
+    X(ActiveTexture) X(ClientActiveTexture) X(GenerateMipmap)                                                              \
     X(EnableClientState) X(DisableClientState) X(VertexPointer) X(NormalPointer) X(TexCoordPointer)     \
     X(DrawElements) X(DrawArrays) X(Begin) X(End) X(TexCoord2f) X(Vertex2f)                             \
     X(GenBuffers) X(DeleteBuffers) X(BindBuffer) X(BufferData)                                           \

@@ -1,6 +1,7 @@
 #include "gl/renderer.h"
 
 #include <array>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
@@ -95,6 +96,16 @@ std::vector<double> meshPoints(const MeshDecl& m, std::vector<glm::vec3>& out) {
     for (size_t i = 0; i + 2 < m.points.size(); i += 3)
         out.emplace_back(float(m.points[i]), float(m.points[i + 1]), float(m.points[i + 2]));
     return m.points;
+}
+
+GLenum internalFormat(TextureDecl::Format f) {
+    switch (f) {
+    case TextureDecl::Format::RGBA8: return GL_RGBA8;
+    case TextureDecl::Format::RGBA16F: return GL_RGBA16F;
+    case TextureDecl::Format::RGBA32F: return GL_RGBA32F;
+    case TextureDecl::Format::R11F_G11F_B10F: return GL_R11F_G11F_B10F;
+    }
+    return GL_RGBA8;
 }
 
 bool makeMesh(const MeshDecl& m, Mesh& mesh, std::string& error) {
@@ -346,12 +357,22 @@ bool Renderer::prepare(const Plan& plan, Diagnostics& diags, SourceTexts& source
             else
                 gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, img.width, img.height, 0, GL_RGBA, GL_FLOAT,
                                flipRows(img.f32, img.height).data());
+            obj.floatData = img.type == Image::Type::F32;
             obj.width = img.width;
             obj.height = img.height;
         } else {
-            // Start targets black rather than with whatever memory held.
-            std::vector<std::uint8_t> zeros(size_t(t.width) * size_t(t.height) * 4, 0);
-            gl_.TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, t.width, t.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, zeros.data());
+            // Start targets black rather than with whatever memory held, in
+            // the format the script asked for.
+            std::vector<float> zeros(size_t(t.width) * size_t(t.height) * 4, 0.f);
+            gl_.TexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat(t.format)), t.width, t.height, 0, GL_RGBA, GL_FLOAT,
+                           zeros.data());
+            if (t.mips) {
+                gl_.TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+                gl_.GenerateMipmap(GL_TEXTURE_2D);
+            }
+            obj.format = t.format;
+            obj.mips = t.mips;
+            obj.floatData = isFloatFormat(t.format);
         }
         gl_.BindTexture(target, 0);
         textures_[i] = obj;
@@ -533,6 +554,14 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
                 drawStep(s.draw, values, time, pass.targets.empty());
             }
         }
+        // A target with a mip chain gets its levels remade from what the
+        // pass drew, so textureLod and minification read this frame.
+        for (int t : pass.targets) {
+            if (!textures_[size_t(t)].mips) continue;
+            gl_.BindTexture(GL_TEXTURE_2D, textures_[size_t(t)].id);
+            gl_.GenerateMipmap(GL_TEXTURE_2D);
+            gl_.BindTexture(GL_TEXTURE_2D, 0);
+        }
         if (timings) {
             gl_.Finish();
             timings->push_back({int(pi), std::chrono::duration<double, std::milli>(Clock::now() - start).count()});
@@ -665,6 +694,33 @@ Image Renderer::readScreen() const {
     gl_.ReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);
     return flipRows(std::move(img));
+}
+
+Image Renderer::readTextureFloat(int texture) const {
+    if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
+    const TextureObject& t = textures_[size_t(texture)];
+    if (t.target != GL_TEXTURE_2D) return {};
+    Image img = Image::rgbaF32(t.width, t.height);
+    gl_.BindTexture(GL_TEXTURE_2D, t.id);
+    gl_.PixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl_.GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img.f32.data());
+    gl_.BindTexture(GL_TEXTURE_2D, 0);
+    img.f32 = flipRows(img.f32, img.height);
+    return img;
+}
+
+bool Renderer::isFloatTexture(int texture) const {
+    return texture >= 0 && size_t(texture) < textures_.size() && textures_[size_t(texture)].floatData;
+}
+
+std::vector<int> Renderer::renderTargets() const {
+    std::vector<int> out;
+    if (!plan_) return out;
+    for (const auto& p : plan_->passes)
+        if (p.needed)
+            for (int t : p.targets)
+                if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
+    return out;
 }
 
 Image Renderer::readTexture(int texture) const {

@@ -69,6 +69,14 @@ public:
     // A texture of the plan (a render target or a loaded image), row 0 at the
     // top; empty if it was never made because nothing needed it.
     Image readTexture(int texture) const;
+    // The same as float RGBA, for float targets, --dump to .hdr/.pfm and the
+    // numeric health report. Empty if the texture was never made.
+    Image readTextureFloat(int texture) const;
+    // Whether a texture holds more than 8 bits a channel (a float target or a
+    // float image): its --dump is read as float.
+    bool isFloatTexture(int texture) const;
+    // The textures the needed passes render into, in plan order.
+    std::vector<int> renderTargets() const;
 
 private:
     Renderer() = default;
@@ -93,6 +101,9 @@ private:
         unsigned id = 0;  // 0: not made, nothing needed it
         unsigned target = 0x0DE1;  // GL_TEXTURE_2D, GL_TEXTURE_3D or GL_TEXTURE_CUBE_MAP
         int width = 0, height = 0;
+        TextureDecl::Format format = TextureDecl::Format::RGBA8;  // render targets; loaded images keep theirs
+        bool mips = false;
+        bool floatData = false;  // read back as float (float targets, .hdr and float .tex images)
     };
     std::vector<TextureObject> textures_;  // per TextureDecl
     std::vector<std::unique_ptr<MeshBuffers>> meshes_;

@@ -61,6 +61,11 @@ struct TextureDecl {
     std::vector<std::string> facePaths, faceShown;  // Cube: six files, +x -x +y -y +z -z
     int width = 0, height = 0;  // Empty: as written; File: filled in when loaded
     int depth = 0;              // Tex3D Empty: as written
+    // Glimmer extensions for render targets (docs/glib.md): the storage
+    // format, and a mip chain made after each pass that writes it.
+    enum class Format { RGBA8, RGBA16F, RGBA32F, R11F_G11F_B10F };
+    Format format = Format::RGBA8;
+    bool mips = false;
     SourceLoc loc;
     bool renderTarget = false;  // some pass writes it
     bool needsDepth = false;    // some pass writing it draws depth that matters
@@ -138,6 +143,15 @@ struct PlanOptions {
 // Resolves and checks a parsed script. Problems go to `diags`; the plan is
 // usable (renders what it can) unless diags has errors.
 Plan buildPlan(const Script& script, const PlanOptions& options, Diagnostics& diags);
+
+// "RGBA16F" -> Format (case-insensitive); false for anything else.
+bool parseTextureFormat(const std::string& word, TextureDecl::Format& out);
+const char* textureFormatName(TextureDecl::Format f);
+bool isFloatFormat(TextureDecl::Format f);
+
+// A size written relative to the output: "w", "h", "w/2", "h*2" (integer
+// divide, at least 1). False if `word` is not of that form.
+bool relativeSize(const std::string& word, int width, int height, int& out);
 
 // Finds `name` as glman would: absolute, else the script's folder, else the
 // project folders ../shaders and ../textures beside it, else each -I folder.

@@ -1,5 +1,7 @@
 // Walks the commands in script order, keeping glman's state (matrices,
 // colour, current shaders, texture units) and writing passes of draws.
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <optional>
 #include <sstream>
@@ -528,15 +530,44 @@ private:
             t.source = TextureDecl::Source::File;
             t.shown = c.args[1].text;
             if (!textureFile(c.args[1], t.path)) return;
-        } else if (c.args.size() == 3 && allNumbers(c, 1)) {
-            if (!sizeArgs(c, 1, 2)) return;
-            t.width = int(c.args[1].number);
-            t.height = int(c.args[2].number);
+        } else if (c.args.size() >= 3 && c.args.size() <= 5) {
+            // unit W H [FORMAT] [mips]; W and H numbers or relative to the output.
+            if (!targetSize(c.args[1], t.width) || !targetSize(c.args[2], t.height)) return;
+            for (size_t i = 3; i < c.args.size(); ++i) {
+                const Arg& a = c.args[i];
+                std::string word = a.text;
+                for (auto& ch : word) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+                if (a.kind == Arg::Kind::Word && word == "mips" && !t.mips) {
+                    t.mips = true;
+                } else if (a.kind == Arg::Kind::Word && i == 3 && parseTextureFormat(a.text, t.format)) {
+                } else {
+                    diags_.error(file(), a.loc, fmt::format("'{}' is not a texture format (RGBA8, RGBA16F, RGBA32F, "
+                                                            "R11F_G11F_B10F) or 'mips'", a.text));
+                    return;
+                }
+            }
         } else {
             diags_.error(file(), c.loc, usage);
             return;
         }
         bindTexture(unit, std::move(t));
+    }
+
+    // A render target's width or height: a whole number, or relative to
+    // the output ("w/2") so a chain of targets follows the window.
+    bool targetSize(const Arg& a, int& out) {
+        if (a.kind == Arg::Kind::Number) {
+            if (a.number != std::floor(a.number) || a.number < 1 || a.number > 16384) {
+                diags_.error(file(), a.loc, "a texture's size must be between 1 and 16384 each way");
+                return false;
+            }
+            out = int(a.number);
+            return true;
+        }
+        if (a.kind == Arg::Kind::Word && relativeSize(a.text, plan_.width, plan_.height, out)) return true;
+        diags_.error(file(), a.loc, fmt::format("'{}' is not a size: write a number, or w, h, w/2, h*2 ... "
+                                                "relative to the output", a.text));
+        return false;
     }
 
     void texture3D(const Command& c) {
@@ -858,6 +889,51 @@ bool MeshDecl::flat() const {
     }
     default: return false;
     }
+}
+
+bool parseTextureFormat(const std::string& word, TextureDecl::Format& out) {
+    std::string w = word;
+    for (auto& ch : w) ch = char(std::toupper(static_cast<unsigned char>(ch)));
+    if (w == "RGBA8") out = TextureDecl::Format::RGBA8;
+    else if (w == "RGBA16F") out = TextureDecl::Format::RGBA16F;
+    else if (w == "RGBA32F") out = TextureDecl::Format::RGBA32F;
+    else if (w == "R11F_G11F_B10F") out = TextureDecl::Format::R11F_G11F_B10F;
+    else return false;
+    return true;
+}
+
+const char* textureFormatName(TextureDecl::Format f) {
+    switch (f) {
+    case TextureDecl::Format::RGBA8: return "RGBA8";
+    case TextureDecl::Format::RGBA16F: return "RGBA16F";
+    case TextureDecl::Format::RGBA32F: return "RGBA32F";
+    case TextureDecl::Format::R11F_G11F_B10F: return "R11F_G11F_B10F";
+    }
+    return "?";
+}
+
+bool isFloatFormat(TextureDecl::Format f) { return f != TextureDecl::Format::RGBA8; }
+
+bool relativeSize(const std::string& word, int width, int height, int& out) {
+    if (word.empty()) return false;
+    char axis = char(std::tolower(static_cast<unsigned char>(word[0])));
+    if (axis != 'w' && axis != 'h') return false;
+    long base = axis == 'w' ? width : height;
+    if (word.size() == 1) {
+        out = int(base);
+        return true;
+    }
+    char op = word[1];
+    if ((op != '/' && op != '*') || word.size() < 3) return false;
+    long n = 0;
+    for (size_t i = 2; i < word.size(); ++i) {
+        if (!std::isdigit(static_cast<unsigned char>(word[i])) || n > 100000) return false;
+        n = n * 10 + (word[i] - '0');
+    }
+    if (n < 1) return false;
+    long v = op == '/' ? base / n : base * n;
+    out = int(std::clamp(v, 1L, 16384L));
+    return true;
 }
 
 bool Plan::screenNeeded() const {

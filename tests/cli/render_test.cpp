@@ -150,3 +150,29 @@ TEST(CliCheck, CheckTakesNoOutputOption) {
 
 }  // namespace
 }  // namespace glimmer_cli
+
+namespace {
+
+using namespace glimmer_cli;
+
+TEST(CliHealth, StrictFailsOnANanAndNamesTheTarget) {
+    TempDir dir;
+    auto r = runGlimmer({"render", cliData("nan.glib"), "--backend", "osmesa", "--strict", "--dump",
+                         "6=" + dir.file("t.pfm"), "-o", dir.file("o.png")});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find("health: unit 6 (RGBA16F 16x16): 12 NaN, 0 Inf, 0 negative, 0 above 65504; first bad pixel at"),
+              std::string::npos)
+        << r.err;
+    EXPECT_NE(r.err.find("glimmer: error: --strict: a target holds NaN"), std::string::npos) << r.err;
+    // The float dump keeps its values: a PFM of 16x16 RGB floats after its header.
+    EXPECT_EQ(std::filesystem::file_size(dir.file("t.pfm")), std::string("PF\n16 16\n-1.0\n").size() + 16 * 16 * 3 * 4);
+}
+
+TEST(CliHealth, WithoutStrictTheReportIsOnlyInformation) {
+    TempDir dir;
+    auto r = runGlimmer({"render", cliData("nan.glib"), "--backend", "osmesa", "--health", "-o", dir.file("o.png")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("health: screen (RGBA8 600x600)"), std::string::npos) << r.err;
+}
+
+}  // namespace

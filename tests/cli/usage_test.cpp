@@ -83,7 +83,7 @@ TEST_P(CliBadDump, IsAUsageError) {
                          "--backend", "osmesa"});
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(r.err, std::string("glimmer: error: --dump '") + GetParam() +
-                         "' is not UNIT=FILE.png with a unit from 0 to 31\n");
+                         "' is not UNIT=FILE with a unit from 0 to 31\n");
     EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }
 

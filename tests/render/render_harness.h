@@ -21,6 +21,8 @@ struct Rendered {
     std::string error;  // why not ok: the diagnostics, printed
     Image screen;
     std::map<int, Image> units;  // texture unit -> its texture when the script ended
+    std::map<int, Image> floats; // the same read back as float RGBA
+    std::string warnings;        // every diagnostic, printed
 };
 
 // The backends the render tests run on: GLIMMER_TEST_BACKENDS (comma list),
@@ -66,8 +68,14 @@ inline Rendered renderScript(const std::string& backendName, const std::string& 
     r.screen = renderer->readScreen();
     for (int u : readUnits) {
         auto it = loaded.plan.finalUnits.find(u);
-        if (it != loaded.plan.finalUnits.end()) r.units[u] = renderer->readTexture(it->second);
+        if (it != loaded.plan.finalUnits.end()) {
+            r.units[u] = renderer->readTexture(it->second);
+            r.floats[u] = renderer->readTextureFloat(it->second);
+        }
     }
+    std::ostringstream printed;
+    printDiagnostics(diags, loaded.sources, printed);
+    r.warnings = printed.str();
     r.ok = true;
     return r;
 }
