@@ -36,7 +36,19 @@ struct SheetOptions : CommonOptions {
     std::string output = "sheet.png";
 };
 
+struct TradeoffOptions {
+    std::string image;  // empty: the grid pattern, generated at `size`
+    std::string size;
+    std::string format = "RGBA16F";
+    int repeat = 5;
+    std::vector<std::string> methods;
+    std::string backend = "auto";
+    std::string output = "tradeoff";
+};
+
 void addRenderCommand(CLI::App& app, RenderOptions& options);
+void addTradeoffCommand(CLI::App& app, TradeoffOptions& options);
+int runTradeoff(const TradeoffOptions& options);
 void addSheetCommand(CLI::App& app, SheetOptions& options);
 int runSheet(const SheetOptions& options);
 void addCheckCommand(CLI::App& app, CommonOptions& options);

@@ -18,10 +18,12 @@ int main(int argc, char** argv) {
     CommonOptions check;
     ViewOptions view;
     SheetOptions sheet;
+    TradeoffOptions tradeoff;
     addRenderCommand(app, render);
     addCheckCommand(app, check);
     addViewCommand(app, view);
     addSheetCommand(app, sheet);
+    addTradeoffCommand(app, tradeoff);
     // `glimmer script.glib` is `glimmer view script.glib`, as glslViewer.
     std::vector<char*> args(argv, argv + argc);
     std::string viewWord = "view";
@@ -32,9 +34,9 @@ int main(int argc, char** argv) {
     // CLI11 reports a mistyped command as "A subcommand is required"; name it.
     std::string first = args.size() > 1 ? args[1] : "";
     if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view" &&
-        first != "sheet") {
+        first != "sheet" && first != "tradeoff") {
         std::cerr << "glimmer: error: unknown command '" << first
-                  << "'; the commands are 'render', 'check', 'view' and 'sheet'\n"
+                  << "'; the commands are 'render', 'check', 'view', 'sheet' and 'tradeoff'\n"
                   << "Run with --help for more information.\n";
         return kExitUsage;
     }
@@ -48,5 +50,6 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("check")) return runCheck(check);
     if (app.got_subcommand("view")) return runView(view);
     if (app.got_subcommand("sheet")) return runSheet(sheet);
+    if (app.got_subcommand("tradeoff")) return runTradeoff(tradeoff);
     return kExitUsage;
 }

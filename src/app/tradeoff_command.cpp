@@ -1,0 +1,229 @@
+// glimmer tradeoff: for each blur method, the time of its passes against its
+// error: numerical (against a double-precision CPU reference of the same
+// kernel) and model (against an exact Gaussian of the same sigma). Prints a
+// table, writes CSV, JSON and a Pareto chart.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "app/pipeline.h"
+#include "app/tradeoff_methods.h"
+#include "backends/context.h"
+#include "gl/renderer.h"
+#include "image/test_images.h"
+#include "reference/metrics.h"
+#include "reference/pareto_chart.h"
+
+namespace fs = std::filesystem;
+
+namespace glimmer {
+namespace {
+
+struct Row {
+    const BlurMethod* method;
+    double ms = 0;
+    double sigma = 0;
+    double megabytes = 0;
+    ErrorStats numerical, model;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0 : v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
+}
+
+int bytesPerTexel(TextureDecl::Format f) {
+    switch (f) {
+    case TextureDecl::Format::RGBA8: return 4;
+    case TextureDecl::Format::RGBA16F: return 8;
+    case TextureDecl::Format::RGBA32F: return 16;
+    case TextureDecl::Format::R11F_G11F_B10F: return 4;
+    }
+    return 4;
+}
+
+RgbImage rgbOf(const Image& img) { return toRgb(img); }
+
+std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
+
+}  // namespace
+
+void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
+    CLI::App* sub = app.add_subcommand("tradeoff", "time blur methods against their error; table, CSV, JSON, chart");
+    sub->add_option("image", o.image, "input picture (default: the project's grid pattern, generated at --size)");
+    sub->add_option("--size", o.size, "size of the generated input WxH (default 512x512)");
+    sub->add_option("--format", o.format, "target format: RGBA8, RGBA16F (default), RGBA32F, R11F_G11F_B10F");
+    sub->add_option("--repeat", o.repeat, "timed runs per method after one warm-up (default 5)");
+    sub->add_option("--methods", o.methods, "only methods whose name contains one of these words");
+    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless");
+    sub->add_option("-o,--output", o.output, "prefix of the files written: PREFIX.csv, .json, .png");
+}
+
+int runTradeoff(const TradeoffOptions& o) {
+    TextureDecl::Format format;
+    if (!parseTextureFormat(o.format, format)) {
+        std::cerr << fmt::format("glimmer: error: --format '{}' is not RGBA8, RGBA16F, RGBA32F or R11F_G11F_B10F\n", o.format);
+        return kExitUsage;
+    }
+    BackendChoice backend;
+    if (!parseBackend(o.backend, backend) || o.repeat < 1) {
+        std::cerr << "glimmer: error: --backend or --repeat is not valid\n";
+        return kExitUsage;
+    }
+    // The input, as the GPU will see it.
+    fs::path dir = fs::temp_directory_path() / fmt::format("glimmer-tradeoff-{}", ::getpid());
+    fs::create_directories(dir);
+    Image input;
+    std::string why;
+    std::string imagePath;
+    if (!o.image.empty()) {
+        if (!loadImage(o.image, input, why)) {
+            std::cerr << "glimmer: error: " << why << "\n";
+            return kExitUsage;
+        }
+        imagePath = fs::absolute(o.image).string();
+    } else {
+        int w = 512, h = 512;
+        if (!o.size.empty() && !parseSize(o.size, w, h)) {
+            std::cerr << fmt::format("glimmer: error: --size '{}' is not WIDTHxHEIGHT\n", o.size);
+            return kExitUsage;
+        }
+        input = makeGridImage(w, h);
+        imagePath = (dir / "input.bmp").string();
+        if (!writeBmp(imagePath, input, why)) {
+            std::cerr << "glimmer: error: " << why << "\n";
+            return kExitScriptError;
+        }
+    }
+    for (const auto& [name, text] : blurShaders()) std::ofstream(dir / name) << text;
+    const RgbImage in = rgbOf(input);
+
+    std::vector<BlurMethod> methods;
+    for (auto& m : blurMethods()) {
+        bool keep = o.methods.empty();
+        for (const auto& w : o.methods) keep |= m.name.find(w) != std::string::npos;
+        if (keep) methods.push_back(m);
+    }
+    auto context = createContext(backend, why);
+    if (!context) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+    auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
+    if (!renderer) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+
+    std::vector<Row> rows;
+    for (size_t i = 0; i < methods.size(); ++i) {
+        const BlurMethod& m = methods[i];
+        std::cerr << fmt::format("\rtradeoff: {}/{} {:<16}", i + 1, methods.size(), m.name) << std::flush;
+        fs::path script = dir / "method.glib";
+        std::ofstream(script) << m.script(imagePath, input.width, input.height, textureFormatName(format));
+        Diagnostics diags;
+        LoadedScript loaded;
+        PlanOptions po;
+        po.keepTargets = {m.outputUnit};
+        po.width = input.width;
+        po.height = input.height;
+        if (!loadScript(script.string(), po, diags, loaded) || diags.hasErrors() ||
+            !renderer->prepare(loaded.plan, diags, loaded.sources)) {
+            std::cerr << "\n";
+            printDiagnostics(diags, loaded.sources, std::cerr);
+            return kExitScriptError;
+        }
+        UniformValues values(loaded.plan);
+        renderer->render(values, 0);  // warm-up: llvmpipe compiles shaders at first draw
+        std::vector<double> times;
+        for (int r = 0; r < o.repeat; ++r) {
+            std::vector<PassTiming> t;
+            renderer->render(values, 0, &t);
+            double sum = 0;
+            for (const auto& p : t) sum += p.ms;
+            times.push_back(sum);
+        }
+        Image out = renderer->readTextureFloat(loaded.plan.finalUnits.at(m.outputUnit));
+        RgbImage gpu = rgbOf(out);
+        Row row;
+        row.method = &m;
+        row.ms = median(times);
+        row.numerical = compare(gpu, m.reference(in));
+        row.sigma = impulseSigma(m.reference);
+        int radius = int(std::ceil(4 * row.sigma));
+        row.model = compare(gpu, gaussianBlur(in, row.sigma, radius, Wrap::Repeat));
+        double texels = double(input.width) * double(input.height);
+        row.megabytes = texels * (m.tapsPerPixel + m.texelsWrittenPerPixel) * bytesPerTexel(format) / 1e6;
+        rows.push_back(row);
+    }
+    std::cerr << "\n";
+    fs::remove_all(dir);
+
+    // The table.
+    std::string title = fmt::format("{} on {}, {}x{} {}, median of {}", context->name(), renderer->rendererName(),
+                                    input.width, input.height, textureFormatName(format), o.repeat);
+    fmt::print("{}\n", title);
+    fmt::print("{:<14}{:>6}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9}\n", "method", "taps",
+               "ms", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st", "mod RMSE", "mod PSNR",
+               "mod max", "mod >1st");
+    for (const auto& r : rows)
+        fmt::print("{:<14}{:>6}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9}\n",
+                   r.method->name, r.method->tapsPerPixel, r.ms, r.megabytes, r.sigma, r.numerical.rmse,
+                   r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr,
+                   r.model.maxAbs, r.model.pixelsOverOneStep);
+    const Row* fastest = nullptr;
+    for (const auto& r : rows)
+        if (r.model.psnr >= 40 && (!fastest || r.ms < fastest->ms)) fastest = &r;
+    if (fastest)
+        fmt::print("fastest within 40 dB PSNR of the Gaussian of its own sigma: {} ({:.2f} ms, {:.1f} dB)\n",
+                   fastest->method->name, fastest->ms, fastest->model.psnr);
+    else
+        fmt::print("no method came within 40 dB PSNR of the Gaussian of its own sigma\n");
+
+    // CSV, JSON, chart.
+    std::ofstream csv(o.output + ".csv");
+    csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
+           "model_psnr,model_max,model_over_one_step\n";
+    for (const auto& r : rows)
+        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{}\n",
+                           r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
+                           r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
+                           r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
+                           r.model.pixelsOverOneStep);
+    std::ofstream json(o.output + ".json");
+    json << "{\n  \"title\": \"" << title << "\",\n  \"methods\": [\n";
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const Row& r = rows[i];
+        json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
+                            "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
+                            "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
+                            "\"over_one_step\": {}}}}}{}\n",
+                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
+                            jsonNumber(r.ms), jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
+                            jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
+                            jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),
+                            r.model.pixelsOverOneStep, i + 1 < rows.size() ? "," : "");
+    }
+    json << "  ]\n}\n";
+    std::vector<ChartPoint> points;
+    for (const auto& r : rows) points.push_back({r.method->name, r.ms, r.model.psnr});
+    Image chart = paretoChart(points, fmt::format("PSNR against an exact Gaussian, by time: {}, {}x{} {}",
+                                                  context->name(), input.width, input.height, textureFormatName(format)));
+    if (!writePng(o.output + ".png", chart, why)) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+    std::cerr << fmt::format("wrote {0}.csv, {0}.json, {0}.png\n", o.output);
+    return kExitOk;
+}
+
+}  // namespace glimmer

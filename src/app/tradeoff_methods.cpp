@@ -1,0 +1,266 @@
+#include "app/tradeoff_methods.h"
+
+#include <cmath>
+
+#include <fmt/format.h>
+
+namespace glimmer {
+namespace {
+
+// Every pass draws one quad over its whole target; the fragment's vST is
+// the target texel's centre, and offsets are in SOURCE texels (the
+// conventions of src/reference/blur_reference.h).
+const char* kVert = R"(#version 330 compatibility
+out vec2 vST;
+void main() {
+    vST = gl_MultiTexCoord0.st;
+    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+}
+)";
+
+// LearnOpenGL's 9-tap Gaussian, one direction, whole-texel offsets.
+const char* kSep9 = R"(#version 330 compatibility
+uniform sampler2D Src;
+uniform vec2 uDir;
+in vec2 vST;
+const float w[5] = float[](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
+void main() {
+    vec2 d = uDir / vec2(textureSize(Src, 0));
+    vec3 c = texture(Src, vST).rgb * w[0];
+    for (int i = 1; i < 5; ++i)
+        c += (texture(Src, vST + float(i) * d).rgb + texture(Src, vST - float(i) * d).rgb) * w[i];
+    gl_FragColor = vec4(c, 1.0);
+}
+)";
+
+// The same kernel with bilinear tap merging: 5 fetches instead of 9.
+const char* kLinear5 = R"(#version 330 compatibility
+uniform sampler2D Src;
+uniform vec2 uDir;
+in vec2 vST;
+const float o[3] = float[](0.0, 1.3846153846, 3.2307692308);
+const float w[3] = float[](0.227027, 0.3162162, 0.07027);
+void main() {
+    vec2 d = uDir / vec2(textureSize(Src, 0));
+    vec3 c = texture(Src, vST).rgb * w[0];
+    for (int i = 1; i < 3; ++i)
+        c += (texture(Src, vST + o[i] * d).rgb + texture(Src, vST - o[i] * d).rgb) * w[i];
+    gl_FragColor = vec4(c, 1.0);
+}
+)";
+
+// Bjorge 2015, dual filter: halfpixel = 0.5 * offset source texels.
+const char* kKawaseDown = R"(#version 330 compatibility
+uniform sampler2D Src;
+uniform float uOffset;
+in vec2 vST;
+void main() {
+    vec2 h = 0.5 * uOffset / vec2(textureSize(Src, 0));
+    vec3 c = texture(Src, vST).rgb * 4.0;
+    c += texture(Src, vST - h).rgb;
+    c += texture(Src, vST + h).rgb;
+    c += texture(Src, vST + vec2(h.x, -h.y)).rgb;
+    c += texture(Src, vST - vec2(h.x, -h.y)).rgb;
+    gl_FragColor = vec4(c / 8.0, 1.0);
+}
+)";
+
+const char* kKawaseUp = R"(#version 330 compatibility
+uniform sampler2D Src;
+uniform float uOffset;
+in vec2 vST;
+void main() {
+    vec2 h = 0.5 * uOffset / vec2(textureSize(Src, 0));
+    vec3 c = texture(Src, vST + vec2(-h.x * 2.0, 0.0)).rgb;
+    c += texture(Src, vST + vec2(-h.x, h.y)).rgb * 2.0;
+    c += texture(Src, vST + vec2(0.0, h.y * 2.0)).rgb;
+    c += texture(Src, vST + vec2(h.x, h.y)).rgb * 2.0;
+    c += texture(Src, vST + vec2(h.x * 2.0, 0.0)).rgb;
+    c += texture(Src, vST + vec2(h.x, -h.y)).rgb * 2.0;
+    c += texture(Src, vST + vec2(0.0, -h.y * 2.0)).rgb;
+    c += texture(Src, vST + vec2(-h.x, -h.y)).rgb * 2.0;
+    gl_FragColor = vec4(c / 12.0, 1.0);
+}
+)";
+
+std::string header(const std::string& image, const std::string& format, int w, int h) {
+    return fmt::format("##OpenGL GLIB\nOrtho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nTexture2D 5 {}\n"
+                       "Texture2D 10 {} {} {}\nTexture2D 11 {} {} {}\nVertex blur.vert\n",
+                       image, w, h, format, w, h, format);
+}
+
+// N horizontal+vertical pairs ping-ponging 10 <-> 11, ending on 10.
+std::string separable(const std::string& frag, const std::string& image, int w, int h, const std::string& format,
+                      int pairs) {
+    std::string s = header(image, format, w, h) + "Fragment " + frag + "\n";
+    int src = 5;
+    for (int p = 0; p < pairs; ++p) {
+        s += fmt::format("RenderToTexture 11\nProgram H{} Src {} uDir [1 0]\nQuadXY 0 1\n", p, src);
+        s += fmt::format("RenderToTexture 10\nProgram V{} Src 11 uDir [0 1]\nQuadXY 0 1\n", p);
+        src = 10;
+    }
+    return s + "RenderToTexture\n";
+}
+
+std::string kawase(const std::string& image, int w, int h, const std::string& format, int iterations) {
+    std::string s = header(image, format, w, h);
+    // Down to units 12, 13, ...; up again through 12 + k, ending in 10.
+    std::vector<std::pair<int, int>> sizes = {{w, h}};
+    for (int k = 0; k < iterations; ++k)
+        sizes.push_back({std::max(1, sizes.back().first / 2), std::max(1, sizes.back().second / 2)});
+    for (int k = 1; k <= iterations; ++k)
+        s += fmt::format("Texture2D {} {} {} {}\n", 11 + k, sizes[size_t(k)].first, sizes[size_t(k)].second, format);
+    for (int k = 1; k < iterations; ++k)  // the up chain's own targets
+        s += fmt::format("Texture2D {} {} {} {}\n", 20 + k, sizes[size_t(k)].first, sizes[size_t(k)].second, format);
+    s += "Fragment kawase_down.frag\n";
+    int src = 5;
+    for (int k = 1; k <= iterations; ++k) {
+        s += fmt::format("RenderToTexture {}\nProgram D{} Src {} uOffset 1\nQuadXY 0 1\n", 11 + k, k, src);
+        src = 11 + k;
+    }
+    s += "Fragment kawase_up.frag\n";
+    for (int k = iterations - 1; k >= 0; --k) {
+        int dst = k == 0 ? 10 : 20 + k;
+        s += fmt::format("RenderToTexture {}\nProgram U{} Src {} uOffset 1\nQuadXY 0 1\n", dst, k, src);
+        src = dst;
+    }
+    return s + "RenderToTexture\n";
+}
+
+std::string superblur(const std::string& image, int w, int h, const std::string& format, int half) {
+    return header(image, format, w, h) +
+           fmt::format("Fragment superblur.frag\nRenderToTexture 10\nProgram SuperBlur uHalfSize <0 {} 11> ImageUnit 5\n"
+                       "QuadXY 0 1\nRenderToTexture\n",
+                       half);
+}
+
+// The seed's superblur.frag, as on the slides.
+const char* kSuperblur = R"(#version 330 compatibility
+uniform sampler2D ImageUnit;
+uniform int uHalfSize;
+in vec2 vST;
+
+void main( )
+{
+    ivec2 ires = textureSize( ImageUnit, 0 );
+    float ds = 1. / float( ires.s );
+    float dt = 1. / float( ires.t );
+
+    int halfSize = uHalfSize | 01;          // be sure it's an odd number
+    vec3 rgbSum = vec3( 0., 0., 0. );
+    float maxDistance = length( vec2( float(halfSize), float(halfSize) ) );
+    maxDistance += 1.;      // don't want a zero weight
+    float weightSum = 0.;
+
+    for( int i = -halfSize; i <= halfSize; i++ )
+    {
+        float di = float(i);
+        for( int j = -halfSize; j <= halfSize; j++ )
+        {
+            float dj = float(j);
+            vec2 st = vST + vec2( di*ds, dj*dt );
+            float weight = maxDistance - length( vec2(di,dj) );
+            rgbSum += weight*texture(ImageUnit,st).rgb;
+            weightSum += weight;
+        }
+    }
+    rgbSum /= weightSum;
+    gl_FragColor = vec4( rgbSum, 1. );
+}
+)";
+
+}  // namespace
+
+const std::map<std::string, std::string>& blurShaders() {
+    static const std::map<std::string, std::string> shaders = {
+        {"blur.vert", kVert},          {"sep9.frag", kSep9},           {"linear5.frag", kLinear5},
+        {"kawase_down.frag", kKawaseDown}, {"kawase_up.frag", kKawaseUp}, {"superblur.frag", kSuperblur}};
+    return shaders;
+}
+
+std::vector<BlurMethod> blurMethods() {
+    std::vector<BlurMethod> out;
+    for (int half : {1, 5, 11}) {
+        BlurMethod m;
+        int side = 2 * (half | 1) + 1;
+        m.name = fmt::format("superblur h{}", half);
+        m.family = "brute force (seed superblur)";
+        m.tapsPerPixel = side * side;
+        m.passes = 1;
+        m.texelsWrittenPerPixel = 1;
+        m.script = [half](const std::string& i, int w, int h, const std::string& f) { return superblur(i, w, h, f, half); };
+        m.reference = [half](const RgbImage& img) { return superblurReference(img, half); };
+        out.push_back(m);
+    }
+    for (int pairs : {1, 2, 4}) {
+        BlurMethod m;
+        m.name = fmt::format("sep9 x{}", pairs);
+        m.family = "separable 9-tap (LearnOpenGL)";
+        m.tapsPerPixel = 18 * pairs;
+        m.passes = 2 * pairs;
+        m.texelsWrittenPerPixel = 2.0 * pairs;
+        m.script = [pairs](const std::string& i, int w, int h, const std::string& f) {
+            return separable("sep9.frag", i, w, h, f, pairs);
+        };
+        m.reference = [pairs](const RgbImage& img) { return separableBlur(img, learnOpenGLWeights(), pairs, Wrap::Repeat); };
+        out.push_back(m);
+    }
+    for (int pairs : {1, 2, 4}) {
+        BlurMethod m;
+        m.name = fmt::format("linear5 x{}", pairs);
+        m.family = "linear-sampled 9-tap";
+        m.tapsPerPixel = 10 * pairs;
+        m.passes = 2 * pairs;
+        m.texelsWrittenPerPixel = 2.0 * pairs;
+        m.script = [pairs](const std::string& i, int w, int h, const std::string& f) {
+            return separable("linear5.frag", i, w, h, f, pairs);
+        };
+        // The same discrete kernel: its reference is the 9-tap one, so the
+        // numerical error includes what bilinear merging costs on a GPU.
+        m.reference = [pairs](const RgbImage& img) { return separableBlur(img, learnOpenGLWeights(), pairs, Wrap::Repeat); };
+        out.push_back(m);
+    }
+    for (int it : {2, 3, 4}) {
+        BlurMethod m;
+        m.name = fmt::format("kawase x{}", it);
+        m.family = "dual Kawase (Bjorge 2015)";
+        m.passes = 2 * it;
+        // Down passes read 5 taps per output texel, up passes 8, each at a
+        // quarter of the texels of the level above.
+        double taps = 0, written = 0;
+        for (int k = 1; k <= it; ++k) {
+            taps += 5.0 / std::pow(4.0, k);
+            written += 1.0 / std::pow(4.0, k);
+        }
+        for (int k = 0; k < it; ++k) {
+            taps += 8.0 / std::pow(4.0, k);
+            written += 1.0 / std::pow(4.0, k);
+        }
+        m.tapsPerPixel = int(std::lround(taps));
+        m.texelsWrittenPerPixel = written;
+        m.script = [it](const std::string& i, int w, int h, const std::string& f) { return kawase(i, w, h, f, it); };
+        m.reference = [it](const RgbImage& img) { return dualKawaseBlur(img, it, 1.0, Wrap::Repeat); };
+        out.push_back(m);
+    }
+    return out;
+}
+
+double impulseSigma(const std::function<RgbImage(const RgbImage&)>& reference) {
+    const int n = 128;
+    RgbImage dot(n, n, 0.0);
+    dot.set(n / 2, n / 2, 1.0);
+    RgbImage r = reference(dot);
+    double sum = 0, m2 = 0;
+    // The dot sits at texel n/2; distances are measured from there, wrapping
+    // as the blur did.
+    for (int y = 0; y < r.height; ++y)
+        for (int x = 0; x < r.width; ++x) {
+            double v = r.at(x, y, 0);
+            double dx = x - n / 2, dy = y - n / 2;
+            sum += v;
+            m2 += v * (dx * dx + dy * dy) / 2.0;  // per axis
+        }
+    return sum > 0 ? std::sqrt(m2 / sum) : 0.0;
+}
+
+}  // namespace glimmer
