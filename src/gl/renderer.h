@@ -86,7 +86,7 @@ private:
     void releaseAll();
     // A depth renderbuffer of this size, attached to the bound framebuffer.
     unsigned attachDepth(int width, int height);
-    void drawStep(const Draw& d, const UniformValues& values, double time, bool toScreen);
+    void drawStep(const Draw& d, const UniformValues& values, double time, const std::vector<int>& targets);
     // Why this mesh cannot be drawn with this program (a patch mesh without
     // tessellation shaders, a primitive the geometry shader does not take);
     // empty when it can.
