@@ -162,19 +162,31 @@ struct HandWritten {
     }
 };
 
-// Times `f` with glFinish on each side: GL_TIME_ELAPSED means nothing on
-// llvmpipe, and a wall clock around a finished pipeline means the same thing
-// on every backend.
+// Times `f` the way the renderer times its passes: on a GPU with a
+// GL_TIME_ELAPSED query around it, on a CPU renderer (where the queries mean
+// nothing) with glFinish on each side and a wall clock. Median of `repeat`.
 template <typename F>
-double timed(const GlApi& gl, int repeat, F f) {
+double timed(const GlApi& gl, bool gpu, int repeat, F f) {
     std::vector<double> t;
     f();  // warm-up: first use compiles llvmpipe's code for the shader
     gl.Finish();
     for (int i = 0; i < repeat; ++i) {
-        auto start = Clock::now();
-        f();
-        gl.Finish();
-        t.push_back(msSince(start));
+        if (gpu) {
+            unsigned q = 0;
+            gl.GenQueries(1, &q);
+            gl.BeginQuery(GL_TIME_ELAPSED, q);
+            f();
+            gl.EndQuery(GL_TIME_ELAPSED);
+            GLuint64 ns = 0;
+            gl.GetQueryObjectui64v(q, GL_QUERY_RESULT, &ns);
+            gl.DeleteQueries(1, &q);
+            t.push_back(double(ns) / 1e6);
+        } else {
+            auto start = Clock::now();
+            f();
+            gl.Finish();
+            t.push_back(msSince(start));
+        }
     }
     return median(t);
 }
@@ -185,6 +197,7 @@ int benchBackend(const Options& o, const std::string& backendName) {
     std::vector<double> startup, compile, render, write;
     std::map<int, std::vector<double>> passTimes;
     double fullFrame = 0, addChange = 0;
+    bool gpu = false;  // time with GPU timer queries (a GPU) or glFinish and a wall clock
     std::string rendererName;
     LoadedScript loaded;
     Diagnostics diags;
@@ -226,6 +239,7 @@ int benchBackend(const Options& o, const std::string& backendName) {
         writePng(png, img, why);
         double tWrite = msSince(t3);
         rendererName = r->rendererName();
+        gpu = r->gpuTimers();
         if (i == o.repeat) {  // steady state, on the last context
             for (int k = 0; k < o.repeat; ++k) {
                 std::vector<PassTiming> timings;
@@ -243,9 +257,9 @@ int benchBackend(const Options& o, const std::string& backendName) {
                 change.programs = {bloom};
                 std::vector<bool> only = passesToRun(loaded.plan, change);
                 UniformValues v = values;
-                fullFrame = timed(r->gl(), o.repeat, [&] { r->render(v, 0); });
+                fullFrame = timed(r->gl(), r->gpuTimers(), o.repeat, [&] { r->render(v, 0); });
                 int k = 0;
-                addChange = timed(r->gl(), o.repeat, [&] {
+                addChange = timed(r->gl(), r->gpuTimers(), o.repeat, [&] {
                     v.set(bloom, "uAdd", {(k++ % 2) ? 1.0 : 3.0});
                     r->render(v, 0, nullptr, &only);
                 });
@@ -292,9 +306,9 @@ int benchBackend(const Options& o, const std::string& backendName) {
         gl.Finish();
         double tFirst = msSince(t2);
         if (i == o.repeat) {  // steady state, on the last context
-            hwBlur = timed(gl, o.repeat, [&] { hw.blurPass(o.halfSize); });
-            hwBloom = timed(gl, o.repeat, [&] { hw.bloomPass(o.add); });
-            copy = timed(gl, o.repeat, [&] { hw.copyPass(); });
+            hwBlur = timed(gl, gpu, o.repeat, [&] { hw.blurPass(o.halfSize); });
+            hwBloom = timed(gl, gpu, o.repeat, [&] { hw.bloomPass(o.add); });
+            copy = timed(gl, gpu, o.repeat, [&] { hw.copyPass(); });
         }
         hw.release();
         if (i == 0) continue;

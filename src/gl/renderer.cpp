@@ -242,6 +242,16 @@ std::string Renderer::drawProblem(const Program* prog, const MeshBuffers* mesh) 
     return {};
 }
 
+bool Renderer::gpuTimers() const {
+    if (gpuTimers_ < 0) {
+        std::string name = rendererName();
+        bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
+                        name.find("Software") != std::string::npos;
+        gpuTimers_ = software ? 0 : 1;
+    }
+    return gpuTimers_ == 1;
+}
+
 std::string Renderer::rendererName() const {
     const GLubyte* s = gl_.GetString(GL_RENDERER);
     return s ? reinterpret_cast<const char*>(s) : "unknown";
@@ -524,14 +534,24 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
                       const std::vector<bool>* only) {
     if (!plan_ || !screen_) return;
     using Clock = std::chrono::steady_clock;
+    std::vector<std::pair<int, unsigned>> pendingQueries;
     for (size_t pi = 0; pi < plan_->passes.size(); ++pi) {
         const Pass& pass = plan_->passes[pi];
         if (!pass.needed || (only && (pi >= only->size() || !(*only)[pi]))) continue;
         Target* target = screen_.get();
         for (auto& t : targets_)
             if (t->textures == pass.targets) target = t.get();
-        if (timings) gl_.Finish();
+        // On a GPU each pass is timed by the GPU itself (GL_TIME_ELAPSED),
+        // with no stall between passes; on a CPU renderer such queries mean
+        // nothing, so the pass is fenced with glFinish and a wall clock.
+        const bool gpuTimed = timings && gpuTimers();
+        if (timings && !gpuTimed) gl_.Finish();
         auto start = Clock::now();
+        unsigned query = 0;
+        if (gpuTimed) {
+            gl_.GenQueries(1, &query);
+            gl_.BeginQuery(GL_TIME_ELAPSED, query);
+        }
 
         gl_.BindFramebuffer(GL_FRAMEBUFFER, target->fbo);
         std::vector<GLenum> buffers;
@@ -562,10 +582,19 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
             gl_.GenerateMipmap(GL_TEXTURE_2D);
             gl_.BindTexture(GL_TEXTURE_2D, 0);
         }
-        if (timings) {
+        if (gpuTimed) {
+            gl_.EndQuery(GL_TIME_ELAPSED);
+            pendingQueries.push_back({int(pi), query});
+        } else if (timings) {
             gl_.Finish();
             timings->push_back({int(pi), std::chrono::duration<double, std::milli>(Clock::now() - start).count()});
         }
+    }
+    for (auto [pass, query] : pendingQueries) {  // waits for the GPU once, after the frame
+        GLuint64 ns = 0;
+        gl_.GetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+        gl_.DeleteQueries(1, &query);
+        timings->push_back({pass, double(ns) / 1e6});
     }
     gl_.UseProgram(0);
     gl_.BindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -18,7 +18,8 @@ namespace glimmer {
 
 struct PassTiming {
     int pass = -1;      // index into Plan::passes
-    double ms = 0;      // wall clock around the pass, with glFinish on each side
+    double ms = 0;      // GPU time of the pass (timer query), or on a CPU renderer the wall
+                        // clock around it with glFinish on each side
 };
 
 class Renderer {
@@ -32,6 +33,9 @@ public:
 
     const GlApi& gl() const { return gl_; }
     std::string rendererName() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
+    // Whether pass timings come from GPU timer queries (a GPU) rather than
+    // glFinish and a wall clock (a CPU renderer, where the queries mean nothing).
+    bool gpuTimers() const;
 
     // Loads images and meshes, compiles and links programs, makes targets.
     // Only what the needed passes use, unless `everything` (for `check`).
@@ -111,6 +115,7 @@ private:
     std::vector<std::unique_ptr<Target>> targets_;
     std::unique_ptr<Target> screen_;
     glm::mat4 scene_{1.f};
+    mutable int gpuTimers_ = -1;  // -1: not asked yet
     unsigned screenTexture_ = 0;
     // Noise2 (unit 2) and Noise3 (unit 3), per resolution; they outlive
     // prepare() so a reload does not make them again.
