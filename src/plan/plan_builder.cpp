@@ -515,21 +515,36 @@ private:
         return true;
     }
 
-    void texture2D(const Command& c) {
-        const char* usage = "Texture2D needs a unit and a file, or a unit, a width and a height";
+    // What Texture2D and Texture3D share: the unit, and the file form
+    // (`unit file`). Returns the unit, or -1 after an error; `isFile` says
+    // whether the file form was read into `t`.
+    int textureHead(const Command& c, TextureDecl::Kind kind, const char* usage, TextureDecl& t, bool& isFile) {
+        isFile = false;
         if (c.args.empty()) {
             diags_.error(file(), c.loc, usage);
-            return;
+            return -1;
         }
         int unit = unitArg(c, c.args[0]);
-        if (unit < 0) return;
-        TextureDecl t;
-        t.kind = TextureDecl::Kind::Tex2D;
+        if (unit < 0) return -1;
+        t.kind = kind;
         t.loc = c.loc;
         if (c.args.size() == 2 && c.args[1].kind == Arg::Kind::Word) {
+            isFile = true;
             t.source = TextureDecl::Source::File;
             t.shown = c.args[1].text;
-            if (!textureFile(c.args[1], t.path)) return;
+            if (!textureFile(c.args[1], t.path)) return -1;
+        }
+        return unit;
+    }
+
+    void texture2D(const Command& c) {
+        const char* usage = "Texture2D needs a unit and a file, or a unit, a width and a height";
+        TextureDecl t;
+        bool isFile = false;
+        int unit = textureHead(c, TextureDecl::Kind::Tex2D, usage, t, isFile);
+        if (unit < 0) return;
+        if (isFile) {
+            // the file form is complete
         } else if (c.args.size() >= 3 && c.args.size() <= 5) {
             // unit W H [FORMAT] [mips]; W and H numbers or relative to the output.
             if (!targetSize(c.args[1], t.width) || !targetSize(c.args[2], t.height)) return;
@@ -572,19 +587,12 @@ private:
 
     void texture3D(const Command& c) {
         const char* usage = "Texture3D needs a unit and a raw .tex file, or a unit, a width, a height and a depth";
-        if (c.args.empty()) {
-            diags_.error(file(), c.loc, usage);
-            return;
-        }
-        int unit = unitArg(c, c.args[0]);
-        if (unit < 0) return;
         TextureDecl t;
-        t.kind = TextureDecl::Kind::Tex3D;
-        t.loc = c.loc;
-        if (c.args.size() == 2 && c.args[1].kind == Arg::Kind::Word) {
-            t.source = TextureDecl::Source::File;
-            t.shown = c.args[1].text;
-            if (!textureFile(c.args[1], t.path)) return;
+        bool isFile = false;
+        int unit = textureHead(c, TextureDecl::Kind::Tex3D, usage, t, isFile);
+        if (unit < 0) return;
+        if (isFile) {
+            // the file form is complete
         } else if (c.args.size() == 4 && allNumbers(c, 1)) {
             if (!sizeArgs(c, 1, 3)) return;
             t.width = int(c.args[1].number);

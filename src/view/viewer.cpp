@@ -50,23 +50,29 @@ public:
     Viewer(const ViewOptions& o, GlfwWindow& window, int width, int height)
         : options_(o), window_(window), width_(width), height_(height) {}
 
+    // The script at w x h, parsed, planned and prepared on a renderer of its
+    // own. False (with diagnostics) when anything failed; `renderer` is then null.
+    bool prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer, Diagnostics& diags) {
+        PlanOptions planOptions;
+        planOptions.includeDirs = options_.includeDirs;
+        planOptions.width = w;
+        planOptions.height = h;
+        bool read = loadScript(options_.script, planOptions, diags, next);
+        if (!read || diags.hasErrors()) return false;
+        std::string err;
+        renderer = Renderer::create([&](const char* n) { return window_.getProcAddress(n); }, err);
+        if (!renderer) diags.error(options_.script, {}, err);
+        else if (!renderer->prepare(next.plan, diags, next.sources)) renderer.reset();
+        return renderer != nullptr;
+    }
+
     // Loads the script at the current size. On any error the last good
     // script, renderer and values stay; the error is shown and printed.
     void load(const char* why) {
         Diagnostics diags;
-        PlanOptions planOptions;
-        planOptions.includeDirs = options_.includeDirs;
-        planOptions.width = width_;
-        planOptions.height = height_;
         LoadedScript next;
-        bool read = loadScript(options_.script, planOptions, diags, next);
         std::unique_ptr<Renderer> renderer;
-        if (read && !diags.hasErrors()) {
-            std::string err;
-            renderer = Renderer::create([&](const char* n) { return window_.getProcAddress(n); }, err);
-            if (!renderer) diags.error(options_.script, {}, err);
-            else if (!renderer->prepare(next.plan, diags, next.sources)) renderer.reset();
-        }
+        prepareAt(width_, height_, next, renderer, diags);
         watchFilesOf(next.plan);
         std::ostringstream printed;
         printDiagnostics(diags, next.sources, printed);
@@ -304,15 +310,9 @@ private:
     Image renderAtSize(int w, int h) {
         if (w < 1 || h < 1 || w > 16384 || h > 16384) return {};
         Diagnostics diags;
-        PlanOptions po;
-        po.includeDirs = options_.includeDirs;
-        po.width = w;
-        po.height = h;
         LoadedScript ls;
-        if (!loadScript(options_.script, po, diags, ls) || diags.hasErrors()) return {};
-        std::string err;
-        auto r = Renderer::create([&](const char* n) { return window_.getProcAddress(n); }, err);
-        if (!r || !r->prepare(ls.plan, diags, ls.sources)) return {};
+        std::unique_ptr<Renderer> r;
+        if (!prepareAt(w, h, ls, r, diags)) return {};
         UniformValues v(ls.plan);
         v.carryOver(s_.good->plan, *s_.values, ls.plan);
         r->render(v, s_.time);
