@@ -183,3 +183,46 @@ TEST(Hdr, UnknownFormatIsAnError) {
 }
 
 }  // namespace
+
+namespace {
+
+// The LearnOpenGL bright pass's sanitize. On llvmpipe a NaN or Inf never
+// reaches the blur through the threshold test (NaN > t is false, and
+// GL_LINEAR turns an Inf texel into NaN: Inf * 0 in the filter), so what
+// spreads is a finite value too large for half floats: a 1e30 firefly. Without
+// sanitize the blur carries it along its 9 taps; with it the bright pass caps
+// it at 65504 and nothing downstream leaves the half-float range.
+long overHalf(const Image& img) {
+    long n = 0;
+    for (size_t i = 0; i < img.f32.size(); ++i) n += i % 4 != 3 && !(std::fabs(img.f32[i]) <= 65504.f);
+    return n;
+}
+
+TEST(HdrSanitize, AFireflyTooBigForHalfFloatsDoesNotSpread) {
+    Scene sc("sanitize");
+    std::ofstream(sc.dir / "spot.frag")
+        << "#version 330 compatibility\nin vec2 vST;\n"
+           "void main() {\n"
+           "    ivec2 p = ivec2(gl_FragCoord.xy);\n"
+           "    float v = (p.x == 16 && p.y == 16) ? 1e30 : 2.0;\n"
+           "    gl_FragColor = vec4(v, v, v, 1.0);\n}\n";
+    for (bool sanitize : {false, true}) {
+        std::string s = sc.script(std::string("Texture2D 5 32 32 RGBA32F\nTexture2D 6 32 32 RGBA32F\n"
+                                              "Texture2D 7 32 32 RGBA32F\nTexture2D 8 32 32 RGBA32F\n"
+                                              "Vertex quad.vert\nRenderToTexture 5\nFragment spot.frag\n"
+                                              "Program N\nQuadXY 0 1\n"
+                                              "RenderToTexture 6 7\nFragment lo_scene.frag\n"
+                                              "Program Scene HdrUnit 5 uThreshold <0. 1. 20.> uSanitize <") +
+                                  (sanitize ? "true" : "false") +
+                                  ">\nQuadXY 0 1\nRenderToTexture 8\nFragment gauss9.frag\n"
+                                  "Program B ImageUnit 7 uHorizontal 1\nQuadXY 0 1\n");
+        PlanOptions o;
+        o.includeDirs.push_back(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom");
+        Rendered r = renderScript(testBackends().front(), s, {}, {5, 8}, o);
+        ASSERT_TRUE(r.ok) << r.error;
+        EXPECT_EQ(overHalf(r.floats[5]), 3);  // the one firefly, in r, g and b
+        EXPECT_EQ(overHalf(r.floats[8]), sanitize ? 0 : 9 * 3) << (sanitize ? "sanitized" : "raw");
+    }
+}
+
+}  // namespace
