@@ -34,8 +34,8 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     CLI::App* sub = app.add_subcommand("render", "render a script headless to a PNG");
     addCommon(sub, o);
     sub->add_option("-o,--output", o.output, "the PNG to write");
-    sub->add_option("--dump", o.dumps, "UNIT=FILE: also write the texture on that unit; .png, .hdr or .pfm "
-                                       "(float targets keep their values in .hdr and .pfm) (repeatable)");
+    sub->add_option("--dump", o.dumps, "UNIT=FILE: also write the texture on that unit; .png, .hdr, .pfm or .exr "
+                                       "(float targets keep their values in .hdr, .pfm and .exr) (repeatable)");
     sub->add_option("--time", o.time, "seconds since start, for the Timer uniform");
     sub->add_flag("--timings", o.timings, "print start-up, compile, render and write times");
     sub->add_flag("--health", o.health, "report NaN, Inf, negative, above-65504 and clipped values per target");

@@ -2,6 +2,7 @@
 
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
+#include <tinyexr.h>
 
 #include <algorithm>
 #include <cmath>
@@ -256,11 +257,27 @@ bool writePfm(const std::string& path, const Image& img, std::string& error) {
     return ok;
 }
 
+bool writeExr(const std::string& path, const Image& img, std::string& error) {
+    if (!consistent(img)) {
+        error = "writeExr: empty or inconsistent image";
+        return false;
+    }
+    std::vector<float> px = asFloats(img);
+    const char* err = nullptr;
+    if (SaveEXR(px.data(), img.width, img.height, 4, 0, path.c_str(), &err) < 0) {
+        error = "cannot write " + path + (err ? std::string(": ") + err : std::string());
+        if (err) FreeEXRErrorMessage(err);
+        return false;
+    }
+    return true;
+}
+
 bool writeImage(const std::string& path, const Image& img, std::string& error) {
     auto ext = std::filesystem::path(path).extension().string();
     for (auto& ch : ext) ch = char(std::tolower(static_cast<unsigned char>(ch)));
     if (ext == ".hdr") return writeHdr(path, img, error);
     if (ext == ".pfm") return writePfm(path, img, error);
+    if (ext == ".exr") return writeExr(path, img, error);
     if (ext == ".bmp") return writeBmp(path, img, error);
     if (ext == ".png") {
         if (img.type == Image::Type::U8) return writePng(path, img, error);
@@ -270,7 +287,7 @@ bool writeImage(const std::string& path, const Image& img, std::string& error) {
             u8.u8[i] = std::uint8_t(std::lround(std::clamp(double(img.f32[i]), 0.0, 1.0) * 255.0));
         return writePng(path, u8, error);
     }
-    error = "cannot write '" + path + "': use .png, .hdr, .pfm or .bmp";
+    error = "cannot write '" + path + "': use .png, .hdr, .pfm, .exr or .bmp";
     return false;
 }
 

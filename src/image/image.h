@@ -40,7 +40,9 @@ std::vector<std::uint8_t> encodeBmp(const Image& img);
 // RGB, bottom row first as the format says). Both take U8 or F32 images.
 bool writeHdr(const std::string& path, const Image& img, std::string& error);
 bool writePfm(const std::string& path, const Image& img, std::string& error);
-// Chooses the writer by the extension: .png, .bmp, .hdr, .pfm.
+// OpenEXR through tinyexr (Debian's libtinyexr): RGBA float32, ZIP.
+bool writeExr(const std::string& path, const Image& img, std::string& error);
+// Chooses the writer by the extension: .png, .bmp, .hdr, .pfm, .exr.
 bool writeImage(const std::string& path, const Image& img, std::string& error);
 
 // glman's 3-D raw .tex: three little-endian int32 sizes (w, h, d), then

@@ -8,6 +8,12 @@
 #include "image/image.h"
 #include "image/test_images.h"
 
+#include <unistd.h>
+
+#include <cstdlib>
+
+#include <tinyexr.h>
+
 using namespace glimmer;
 namespace fs = std::filesystem;
 
@@ -99,3 +105,32 @@ TEST(ImageIo, LoadsRadianceHdrAsFloat) {
     EXPECT_FLOAT_EQ(img.f32[2], 0.25f);
     EXPECT_FLOAT_EQ(img.f32[3], 1.0f);
 }
+
+namespace {
+
+// A float picture written as OpenEXR comes back with the same values,
+// top row first, including values far above 1.
+TEST(ExrWrite, RoundTripsFloatValues) {
+    glimmer::Image img = glimmer::Image::rgbaF32(3, 2);
+    for (size_t i = 0; i < img.f32.size(); ++i) img.f32[i] = float(i) * 37.5f - 10.f;
+    std::string path = (std::filesystem::temp_directory_path() / ("glimmer_exr_" + std::to_string(::getpid()) + ".exr")).string();
+    std::string err;
+    ASSERT_TRUE(glimmer::writeImage(path, img, err)) << err;
+    float* rgba = nullptr;
+    int w = 0, h = 0;
+    const char* e = nullptr;
+    ASSERT_EQ(LoadEXR(&rgba, &w, &h, path.c_str(), &e), 0);
+    ASSERT_EQ(w, 3);
+    ASSERT_EQ(h, 2);
+    for (size_t i = 0; i < img.f32.size(); ++i) EXPECT_EQ(rgba[i], img.f32[i]) << i;
+    std::free(rgba);
+    std::filesystem::remove(path);
+}
+
+TEST(ExrWrite, UnknownExtensionIsNamed) {
+    std::string err;
+    EXPECT_FALSE(glimmer::writeImage("out.tiff", glimmer::Image::rgba8(1, 1), err));
+    EXPECT_EQ(err, "cannot write 'out.tiff': use .png, .hdr, .pfm, .exr or .bmp");
+}
+
+}  // namespace
