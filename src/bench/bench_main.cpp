@@ -347,6 +347,10 @@ int benchBackend(const Options& o, const std::string& backendName) {
 }  // namespace
 }  // namespace glimmer
 
+namespace glimmer {
+int formatFigures(const std::string& backendName);
+}
+
 int main(int argc, char** argv) {
     glimmer::Options o;
     CLI::App app{"glimmer-bench: Glimmer against a hand-written GL program, same passes, same run"};
@@ -360,5 +364,6 @@ int main(int argc, char** argv) {
     if (o.script.empty()) o.script = std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib";
     int rc = 0;
     for (const auto& b : o.backends) rc = std::max(rc, glimmer::benchBackend(o, b));
+    rc = std::max(rc, glimmer::formatFigures(o.backends.front()));
     return rc;
 }
