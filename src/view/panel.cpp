@@ -146,6 +146,15 @@ std::vector<ViewCommand> drawPanel(ViewerState& s) {
             ImGui::Text("  pass %d (line %d, %s): %.2f ms", t.pass, pass.loc.line,
                         pass.targets.empty() ? "screen" : "target", t.ms);
         }
+        // A warning badge for any target holding NaN, Inf, negatives or
+        // values past the half-float range (see render --health).
+        for (const auto& h : s.health) {
+            if (!h.bad()) continue;
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.75f, 0.2f, 1.f));
+            ImGui::TextWrapped("(!) %s: %zu NaN, %zu Inf, %zu negative, %zu above 65504", h.name.c_str(), h.health.nan,
+                               h.health.inf, h.health.negative, h.health.above65504);
+            ImGui::PopStyleColor();
+        }
         for (size_t p = 0; p < s.good->plan.programs.size(); ++p) programGroup(s, int(p), p == 0);
     }
     if (!s.status.empty()) ImGui::TextDisabled("%s", s.status.c_str());

@@ -57,6 +57,9 @@ public:
         planOptions.includeDirs = options_.includeDirs;
         planOptions.width = w;
         planOptions.height = h;
+        // Every target can be looked at in the pass inspector, so every pass
+        // that draws into one runs, read by a later pass or not.
+        for (int unit = 0; unit < 32; ++unit) planOptions.keepTargets.insert(unit);
         bool read = loadScript(options_.script, planOptions, diags, next);
         if (!read || diags.hasErrors()) return false;
         std::string err;
@@ -247,6 +250,18 @@ private:
         s_.drawnWith = s_.values;
         s_.drawnTime = s_.time;
         s_.drawAll = false;
+        // The numeric health badge reads every target back: at most twice a
+        // second, so dragging a slider stays smooth.
+        auto now = Clock::now();
+        if (now - lastHealth_ >= std::chrono::milliseconds(500)) {
+            s_.health = measureHealth(*s_.renderer, plan);
+            lastHealth_ = now;
+            std::string report;
+            for (const auto& h : s_.health)
+                if (h.bad()) report += formatHealth(h) + "\n";
+            if (report != lastReport_) std::cerr << report;  // once per change, for scripts watching stderr
+            lastReport_ = report;
+        }
     }
 
     bool execute(const std::string& line) {
@@ -325,6 +340,8 @@ private:
     ViewerState s_;
     FileWatch watch_;
     bool sDown_ = false;
+    Clock::time_point lastHealth_{};
+    std::string lastReport_;
     bool dragging_ = false;
     double lastX_ = 0, lastY_ = 0;
     GlApi fallback_{};

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/numeric_health.h"
 #include "app/pipeline.h"
 #include "backends/glfw_window.h"
 #include "gl/renderer.h"
@@ -46,6 +47,7 @@ struct ViewerState {
     double time = 0, drawnTime = -1;
     int hardcopy[2] = {1920, 1080};
     std::vector<PassTiming> lastTimings;
+    std::vector<TargetHealth> health;  // measured now and then after drawing (a read-back of every target)
     double lastFrameMs = 0;
     std::string status;  // a one-line message for the panel (saved ..., reloaded ...)
 

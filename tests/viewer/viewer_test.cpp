@@ -1,6 +1,7 @@
 // The viewer in a real window: what it saves is what `glimmer render` draws,
 // and a broken edit costs neither the picture nor the slider values.
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstdlib>
 #include <fstream>
@@ -95,6 +96,17 @@ TEST(Viewer, ExecRunsCommandsAndQuits) {
     EXPECT_EQ(v.quit(), 0) << v.log();
     ASSERT_EQ(renderPng(p.dir / "bloom.glib", {"uHalfSize=5", "uAdd=3"}, p.dir / "render.png"), 0);
     EXPECT_EQ(readBytes(p.dir / "exec.png"), readBytes(p.dir / "render.png"));
+}
+
+// The panel's health badge has a twin on stderr: a float target holding a
+// NaN is reported as soon as it is drawn.
+TEST(Viewer, ReportsANanInATarget) {
+    fs::path data = fs::path(GLIMMER_SOURCE_DIR) / "tests/data/cli";
+    ViewerProcess v({"nan.glib", "--size", "64x64", "--no-stdin", "--exec", "save " + (fs::temp_directory_path() /
+                     ("glimmer_nan_view_" + std::to_string(::getpid()) + ".png")).string() + "; quit"}, data);
+    EXPECT_TRUE(v.waitForLog("health: unit 6 (RGBA16F 16x16): 12 NaN")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    fs::remove(fs::temp_directory_path() / ("glimmer_nan_view_" + std::to_string(::getpid()) + ".png"));
 }
 
 }  // namespace
