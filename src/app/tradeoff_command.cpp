@@ -34,6 +34,7 @@ struct Row {
     double sigma = 0;
     double megabytes = 0;
     ErrorStats numerical, model;
+    Health health;  // of the blurred target: NaN, Inf, negative, above 65504
 };
 
 double median(std::vector<double> v) {
@@ -156,6 +157,7 @@ int runTradeoff(const TradeoffOptions& o) {
         RgbImage gpu = rgbOf(out);
         Row row;
         row.method = &m;
+        row.health = healthOf(out.f32.data(), out.width, out.height);
         row.ms = median(times);
         row.numerical = compare(gpu, m.reference(in));
         row.sigma = impulseSigma(m.reference);
@@ -172,14 +174,14 @@ int runTradeoff(const TradeoffOptions& o) {
     std::string title = fmt::format("{} on {}, {}x{} {}, median of {}", context->name(), renderer->rendererName(),
                                     input.width, input.height, textureFormatName(format), o.repeat);
     fmt::print("{}\n", title);
-    fmt::print("{:<14}{:>6}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9}\n", "method", "taps",
-               "ms", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st", "mod RMSE", "mod PSNR",
-               "mod max", "mod >1st");
+    fmt::print("{:<14}{:>6}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n", "method",
+               "taps", "ms", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st", "mod RMSE", "mod PSNR",
+               "mod max", "mod >1st", "health");
     for (const auto& r : rows)
-        fmt::print("{:<14}{:>6}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9}\n",
+        fmt::print("{:<14}{:>6}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
                    r.method->name, r.method->tapsPerPixel, r.ms, r.megabytes, r.sigma, r.numerical.rmse,
                    r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr,
-                   r.model.maxAbs, r.model.pixelsOverOneStep);
+                   r.model.maxAbs, r.model.pixelsOverOneStep, r.health.healthy() ? "ok" : "BAD");
     const Row* fastest = nullptr;
     for (const auto& r : rows)
         if (r.model.psnr >= 40 && (!fastest || r.ms < fastest->ms)) fastest = &r;
@@ -192,13 +194,14 @@ int runTradeoff(const TradeoffOptions& o) {
     // CSV, JSON, chart.
     std::ofstream csv(o.output + ".csv");
     csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
-           "model_psnr,model_max,model_over_one_step\n";
+           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504\n";
     for (const auto& r : rows)
-        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{}\n",
+        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{}\n",
                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
                            r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
                            r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
-                           r.model.pixelsOverOneStep);
+                           r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
+                           r.health.above65504);
     std::ofstream json(o.output + ".json");
     json << "{\n  \"title\": \"" << title << "\",\n  \"methods\": [\n";
     for (size_t i = 0; i < rows.size(); ++i) {
@@ -206,12 +209,14 @@ int runTradeoff(const TradeoffOptions& o) {
         json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
                             "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
                             "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
-                            "\"over_one_step\": {}}}}}{}\n",
+                            "\"over_one_step\": {}}}, \"health\": {{\"nan\": {}, \"inf\": {}, \"negative\": {}, "
+                            "\"above_65504\": {}}}}}{}\n",
                             r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
                             jsonNumber(r.ms), jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
                             jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
                             jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),
-                            r.model.pixelsOverOneStep, i + 1 < rows.size() ? "," : "");
+                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
+                            r.health.above65504, i + 1 < rows.size() ? "," : "");
     }
     json << "  ]\n}\n";
     std::vector<ChartPoint> points;

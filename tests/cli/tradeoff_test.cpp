@@ -35,6 +35,8 @@ TEST(CliTradeoff, WritesTableCsvJsonAndChart) {
     std::ifstream json(dir.file("t.json"));
     std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("\"method\": \"sep9 x2\""), std::string::npos);
+    EXPECT_NE(text.find("\"health\": {\"nan\": 0, \"inf\": 0, \"negative\": 0, \"above_65504\": 0}"), std::string::npos)
+        << text;
     glimmer::Image chart;
     std::string why;
     ASSERT_TRUE(glimmer::loadImage(dir.file("t.png"), chart, why)) << why;
