@@ -9,7 +9,7 @@ packages=(
   libosmesa6-dev                      # OSMesa backend
   libegl-dev libgl-dev                # EGL backend, GL headers
   libegl-mesa0 libgl1-mesa-dri        # Mesa's EGL vendor and llvmpipe, for EGL surfaceless on a CPU
-  libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev libtinyexr-dev
+  libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev libtinyexr-dev libpng-dev
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
 )

@@ -3,6 +3,7 @@
 #include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 #include <tinyexr.h>
+#include <png.h>
 
 #include <algorithm>
 #include <cmath>
@@ -257,6 +258,29 @@ bool writePfm(const std::string& path, const Image& img, std::string& error) {
     return ok;
 }
 
+bool writePng16(const std::string& path, const Image& img, std::string& error) {
+    if (!consistent(img)) {
+        error = "writePng16: empty or inconsistent image";
+        return false;
+    }
+    // libpng's simplified API: 16 bits a channel, the values as they are
+    // (clamped to 0..1), tagged linear (gAMA 1.0).
+    std::vector<float> px = asFloats(img);
+    std::vector<png_uint_16> out(px.size());
+    for (size_t i = 0; i < px.size(); ++i)
+        out[i] = png_uint_16(std::lround(std::clamp(double(px[i]), 0.0, 1.0) * 65535.0));
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    image.width = png_uint_32(img.width);
+    image.height = png_uint_32(img.height);
+    image.format = PNG_FORMAT_LINEAR_RGB_ALPHA;
+    if (!png_image_write_to_file(&image, path.c_str(), 0, out.data(), 0, nullptr)) {
+        error = "cannot write " + path + ": " + image.message;
+        return false;
+    }
+    return true;
+}
+
 bool writeExr(const std::string& path, const Image& img, std::string& error) {
     if (!consistent(img)) {
         error = "writeExr: empty or inconsistent image";
@@ -279,14 +303,7 @@ bool writeImage(const std::string& path, const Image& img, std::string& error) {
     if (ext == ".pfm") return writePfm(path, img, error);
     if (ext == ".exr") return writeExr(path, img, error);
     if (ext == ".bmp") return writeBmp(path, img, error);
-    if (ext == ".png") {
-        if (img.type == Image::Type::U8) return writePng(path, img, error);
-        // A float picture as PNG: clamped to [0,1] and rounded, as a screen would show it.
-        Image u8 = Image::rgba8(img.width, img.height);
-        for (size_t i = 0; i < img.f32.size(); ++i)
-            u8.u8[i] = std::uint8_t(std::lround(std::clamp(double(img.f32[i]), 0.0, 1.0) * 255.0));
-        return writePng(path, u8, error);
-    }
+    if (ext == ".png") return img.type == Image::Type::U8 ? writePng(path, img, error) : writePng16(path, img, error);
     error = "cannot write '" + path + "': use .png, .hdr, .pfm, .exr or .bmp";
     return false;
 }

@@ -40,9 +40,12 @@ std::vector<std::uint8_t> encodeBmp(const Image& img);
 // RGB, bottom row first as the format says). Both take U8 or F32 images.
 bool writeHdr(const std::string& path, const Image& img, std::string& error);
 bool writePfm(const std::string& path, const Image& img, std::string& error);
+// 16-bit PNG through libpng, values clamped to 0..1 and tagged linear.
+bool writePng16(const std::string& path, const Image& img, std::string& error);
 // OpenEXR through tinyexr (Debian's libtinyexr): RGBA float32, ZIP.
 bool writeExr(const std::string& path, const Image& img, std::string& error);
-// Chooses the writer by the extension: .png, .bmp, .hdr, .pfm, .exr.
+// Chooses the writer by the extension: .png (8-bit for U8 images, 16-bit for
+// F32 ones), .bmp, .hdr, .pfm, .exr.
 bool writeImage(const std::string& path, const Image& img, std::string& error);
 
 // glman's 3-D raw .tex: three little-endian int32 sizes (w, h, d), then

@@ -13,6 +13,7 @@
 #include <cstdlib>
 
 #include <tinyexr.h>
+#include <stb/stb_image.h>
 
 using namespace glimmer;
 namespace fs = std::filesystem;
@@ -131,6 +132,30 @@ TEST(ExrWrite, UnknownExtensionIsNamed) {
     std::string err;
     EXPECT_FALSE(glimmer::writeImage("out.tiff", glimmer::Image::rgba8(1, 1), err));
     EXPECT_EQ(err, "cannot write 'out.tiff': use .png, .hdr, .pfm, .exr or .bmp");
+}
+
+}  // namespace
+
+namespace {
+
+// A float picture written as .png becomes a 16-bit PNG: read back through
+// stb at 16 bits, each value is the clamped float to within one 16-bit step.
+TEST(Png16Write, FloatImagesKeepSixteenBits) {
+    glimmer::Image img = glimmer::Image::rgbaF32(4, 1);
+    const float v[4] = {0.1234567f, 0.5f, 2.0f, -1.0f};
+    for (int x = 0; x < 4; ++x)
+        for (int c = 0; c < 4; ++c) img.f32[size_t(x) * 4 + size_t(c)] = c == 3 ? 1.f : v[x];
+    std::string path = (std::filesystem::temp_directory_path() / ("glimmer_png16_" + std::to_string(::getpid()) + ".png")).string();
+    std::string err;
+    ASSERT_TRUE(glimmer::writeImage(path, img, err)) << err;
+    int w = 0, h = 0, n = 0;
+    unsigned short* px = stbi_load_16(path.c_str(), &w, &h, &n, 4);
+    ASSERT_NE(px, nullptr);
+    EXPECT_EQ(stbi_is_16_bit(path.c_str()), 1);
+    const double expected[4] = {0.1234567, 0.5, 1.0, 0.0};
+    for (int x = 0; x < 4; ++x) EXPECT_NEAR(px[x * 4] / 65535.0, expected[x], 0.5 / 65535.0 + 1e-9) << x;
+    stbi_image_free(px);
+    std::filesystem::remove(path);
 }
 
 }  // namespace
