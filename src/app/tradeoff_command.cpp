@@ -60,7 +60,8 @@ std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}
 
 void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
     CLI::App* sub = app.add_subcommand("tradeoff", "time blur methods against their error; table, CSV, JSON, chart");
-    sub->add_option("image", o.image, "input picture (default: the project's grid pattern, generated at --size)");
+    sub->add_option("image", o.image, "input picture, or a .glib script whose picture is blurred (default: the "
+                                      "project's grid pattern, generated at --size)");
     sub->add_option("--size", o.size, "size of the generated input WxH (default 512x512)");
     sub->add_option("--format", o.format, "target format: RGBA8, RGBA16F (default), RGBA32F, R11F_G11F_B10F");
     sub->add_option("--repeat", o.repeat, "timed runs per method after one warm-up (default 5)");
@@ -86,7 +87,40 @@ int runTradeoff(const TradeoffOptions& o) {
     Image input;
     std::string why;
     std::string imagePath;
-    if (!o.image.empty()) {
+    auto context = createContext(backend, why);
+    if (!context) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+    auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
+    if (!renderer) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+    bool isScript = o.image.size() > 5 && o.image.compare(o.image.size() - 5, 5, ".glib") == 0;
+    if (isScript) {
+        // A script's picture as the input: what its screen shows, at --size
+        // or its own size, blurred by each method.
+        Diagnostics diags;
+        LoadedScript loaded;
+        PlanOptions po;
+        if (!o.size.empty() && !parseSize(o.size, po.width, po.height)) {
+            std::cerr << fmt::format("glimmer: error: --size '{}' is not WIDTHxHEIGHT\n", o.size);
+            return kExitUsage;
+        }
+        if (!loadScript(o.image, po, diags, loaded) || diags.hasErrors() ||
+            !renderer->prepare(loaded.plan, diags, loaded.sources)) {
+            printDiagnostics(diags, loaded.sources, std::cerr);
+            return kExitScriptError;
+        }
+        renderer->render(UniformValues(loaded.plan), 0);
+        input = renderer->readScreen();
+        imagePath = (dir / "input.bmp").string();
+        if (!writeBmp(imagePath, input, why)) {
+            std::cerr << "glimmer: error: " << why << "\n";
+            return kExitScriptError;
+        }
+    } else if (!o.image.empty()) {
         if (!loadImage(o.image, input, why)) {
             std::cerr << "glimmer: error: " << why << "\n";
             return kExitUsage;
@@ -114,17 +148,6 @@ int runTradeoff(const TradeoffOptions& o) {
         for (const auto& w : o.methods) keep |= m.name.find(w) != std::string::npos;
         if (keep) methods.push_back(m);
     }
-    auto context = createContext(backend, why);
-    if (!context) {
-        std::cerr << "glimmer: error: " << why << "\n";
-        return kExitScriptError;
-    }
-    auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
-    if (!renderer) {
-        std::cerr << "glimmer: error: " << why << "\n";
-        return kExitScriptError;
-    }
-
     std::vector<Row> rows;
     for (size_t i = 0; i < methods.size(); ++i) {
         const BlurMethod& m = methods[i];

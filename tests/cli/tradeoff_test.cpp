@@ -61,3 +61,17 @@ INSTANTIATE_TEST_SUITE_P(Lab, BloomScripts,
                          ::testing::Values("bailey", "learnopengl", "overflow", "willems", "soltrader", "cod", "kawase"));
 
 }  // namespace
+
+namespace {
+
+// A script as the input: its picture is what gets blurred.
+TEST(CliTradeoffScript, BlursTheScriptsPicture) {
+    glimmer_cli::TempDir dir;
+    auto r = glimmer_cli::runGlimmer({"tradeoff", "scripts/shapes.glib", "--size", "40x40", "--methods", "kawase x2",
+                                      "--repeat", "1", "--backend", "osmesa", "-o", dir.file("s")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("40x40 RGBA16F"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("kawase x2"), std::string::npos) << r.out;
+}
+
+}  // namespace
