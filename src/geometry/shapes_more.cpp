@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "geometry/mesh.h"
+#include "util/pcg32.h"
 
 namespace glimmer {
 
@@ -71,32 +72,6 @@ bool planar(const Mesh& m) {
         if (std::abs(glm::dot(m.vertices[i].position - origin, n)) > 1e-5f * extent) return false;
     return true;
 }
-
-// PCG32 (O'Neill, pcg-random.org, "minimal C" variant): the same stream on
-// every platform and standard library.
-class Pcg32 {
-public:
-    explicit Pcg32(std::uint64_t seed) {
-        next();
-        state_ += seed;
-        next();
-    }
-    std::uint32_t next() {
-        const std::uint64_t old = state_;
-        state_ = old * 6364136223846793005ULL + kInc;
-        const auto xorshifted = static_cast<std::uint32_t>(((old >> 18u) ^ old) >> 27u);
-        const auto rot = static_cast<std::uint32_t>(old >> 59u);
-        return (xorshifted >> rot) | (xorshifted << ((32u - rot) & 31u));
-    }
-    // Uniform in [0, 1).
-    float unit() { return float(next() >> 8) * (1.f / 16777216.f); }
-    // Uniform in [-1, 1).
-    float symmetric() { return 2.f * unit() - 1.f; }
-
-private:
-    static constexpr std::uint64_t kInc = 1442695040888963407ULL;
-    std::uint64_t state_ = 0;
-};
 
 Mesh pointsMesh(const std::vector<glm::vec3>& positions, float size) {
     Mesh m;

@@ -1,4 +1,5 @@
 #include "image/test_images.h"
+#include "util/pcg32.h"
 
 #include <algorithm>
 #include <cstdint>
@@ -23,23 +24,6 @@ void fillRect(Image& img, int cx, int cy, int half, const std::uint8_t (&rgb)[3]
             p[0] = rgb[0], p[1] = rgb[1], p[2] = rgb[2], p[3] = 255;
         }
 }
-
-// PCG32 (O'Neill): tiny, and the same numbers on every platform, unlike std::rand.
-struct Pcg32 {
-    std::uint64_t state, inc;
-    explicit Pcg32(std::uint64_t seed, std::uint64_t seq = 54) : state(0), inc((seq << 1) | 1) {
-        next();
-        state += seed;
-        next();
-    }
-    std::uint32_t next() {
-        const std::uint64_t old = state;
-        state = old * 6364136223846793005ull + inc;
-        const std::uint32_t xorshifted = std::uint32_t(((old >> 18) ^ old) >> 27);
-        const std::uint32_t rot = std::uint32_t(old >> 59);
-        return (xorshifted >> rot) | (xorshifted << ((32 - rot) & 31));
-    }
-};
 
 }  // namespace
 
@@ -69,7 +53,7 @@ Image makeGridImage(int width, int height) {
 
 Image makeNoiseImage(int width, int height, unsigned seed) {
     Image img = Image::rgba8(width, height);
-    Pcg32 rng(seed);
+    Pcg32 rng(seed, 54);  // the stream the committed test pictures were made with
     for (std::size_t i = 0; i < img.u8.size(); i += 4) {
         const std::uint32_t r = rng.next();
         img.u8[i] = std::uint8_t(r);
