@@ -1,4 +1,5 @@
 #include "geometry/mesh.h"
+#include "geometry/mesh_builder.h"
 
 #include <algorithm>
 #include <cmath>
@@ -136,6 +137,21 @@ Mesh makeTorus(float outer, float inner, int sides, int rings) {
     return m;
 }
 
+void appendQuadFace(Mesh& m, glm::vec3 centre, glm::vec3 sHalf, glm::vec3 tHalf, glm::vec3 normal, glm::vec3 tangent) {
+    const auto base = static_cast<std::uint32_t>(m.vertices.size());
+    for (int k = 0; k < 4; ++k) {
+        const float s = (k == 1 || k == 2) ? 1.f : 0.f;
+        const float t = k >= 2 ? 1.f : 0.f;
+        MeshVertex v;
+        v.position = centre + (2.f * s - 1.f) * sHalf + (2.f * t - 1.f) * tHalf;
+        v.normal = normal;
+        v.st = {s, t};
+        v.tangent = tangent;
+        m.vertices.push_back(v);
+    }
+    m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
+}
+
 Mesh makeBox(float dx, float dy, float dz) {
     const glm::vec3 h{dx / 2.f, dy / 2.f, dz / 2.f};
     struct Face {
@@ -151,20 +167,7 @@ Mesh makeBox(float dx, float dy, float dz) {
     m.hasTangents = true;
     m.vertices.reserve(24);
     m.indices.reserve(36);
-    for (const Face& f : faces) {
-        const auto base = static_cast<std::uint32_t>(m.vertices.size());
-        for (int k = 0; k < 4; ++k) {
-            const float s = (k == 1 || k == 2) ? 1.f : 0.f;
-            const float t = k >= 2 ? 1.f : 0.f;
-            MeshVertex v;
-            v.position = h * (f.n + (2.f * s - 1.f) * f.s + (2.f * t - 1.f) * f.t);
-            v.normal = f.n;
-            v.st = {s, t};
-            v.tangent = f.t;
-            m.vertices.push_back(v);
-        }
-        m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    }
+    for (const Face& f : faces) appendQuadFace(m, h * f.n, h * f.s, h * f.t, f.n, f.t);
     return m;
 }
 

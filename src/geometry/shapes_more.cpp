@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "geometry/mesh.h"
+#include "geometry/mesh_builder.h"
 #include "util/pcg32.h"
 
 namespace glimmer {
@@ -190,20 +191,7 @@ Mesh makeQuadBox(float size) {
     };
     Mesh m;
     m.hasTangents = true;
-    for (const Face& f : faces) {
-        const auto base = static_cast<std::uint32_t>(m.vertices.size());
-        for (int k = 0; k < 4; ++k) {
-            const float s = (k == 1 || k == 2) ? 1.f : 0.f;
-            const float t = k >= 2 ? 1.f : 0.f;
-            MeshVertex v;
-            v.position = size * (-f.n + (2.f * s - 1.f) * f.s + (2.f * t - 1.f) * f.t);
-            v.normal = f.n;
-            v.st = {s, t};
-            v.tangent = f.t;
-            m.vertices.push_back(v);
-        }
-        m.indices.insert(m.indices.end(), {base, base + 1, base + 2, base, base + 2, base + 3});
-    }
+    for (const Face& f : faces) appendQuadFace(m, -size * f.n, size * f.s, size * f.t, f.n, f.t);
     return m;
 }
 
