@@ -218,14 +218,22 @@ bool consistent(const Image& img) {
     return img.width > 0 && img.height > 0 && (img.type == Image::Type::F32 ? img.f32.size() : img.u8.size()) == n;
 }
 
+// The pixels of a float writer's input as float RGBA; false (and why, named
+// after the writer) when the image is empty or its buffer does not fit it.
+bool floatPixels(const Image& img, const char* writer, std::vector<float>& px, std::string& error) {
+    if (!consistent(img)) {
+        error = std::string(writer) + ": empty or inconsistent image";
+        return false;
+    }
+    px = asFloats(img);
+    return true;
+}
+
 }  // namespace
 
 bool writeHdr(const std::string& path, const Image& img, std::string& error) {
-    if (!consistent(img)) {
-        error = "writeHdr: empty or inconsistent image";
-        return false;
-    }
-    std::vector<float> f = asFloats(img);
+    std::vector<float> f;
+    if (!floatPixels(img, "writeHdr", f, error)) return false;
     if (!stbi_write_hdr(path.c_str(), img.width, img.height, 4, f.data())) {
         error = "cannot write " + path;
         return false;
@@ -234,16 +242,13 @@ bool writeHdr(const std::string& path, const Image& img, std::string& error) {
 }
 
 bool writePfm(const std::string& path, const Image& img, std::string& error) {
-    if (!consistent(img)) {
-        error = "writePfm: empty or inconsistent image";
-        return false;
-    }
+    std::vector<float> px;
+    if (!floatPixels(img, "writePfm", px, error)) return false;
     std::FILE* f = std::fopen(path.c_str(), "wb");
     if (!f) {
         error = "cannot write " + path;
         return false;
     }
-    std::vector<float> px = asFloats(img);
     // "PF" is colour; a negative scale means little-endian floats.
     std::fprintf(f, "PF\n%d %d\n-1.0\n", img.width, img.height);
     std::vector<float> row(size_t(img.width) * 3);
@@ -259,13 +264,10 @@ bool writePfm(const std::string& path, const Image& img, std::string& error) {
 }
 
 bool writePng16(const std::string& path, const Image& img, std::string& error) {
-    if (!consistent(img)) {
-        error = "writePng16: empty or inconsistent image";
-        return false;
-    }
     // libpng's simplified API: 16 bits a channel, the values as they are
     // (clamped to 0..1), tagged linear (gAMA 1.0).
-    std::vector<float> px = asFloats(img);
+    std::vector<float> px;
+    if (!floatPixels(img, "writePng16", px, error)) return false;
     std::vector<png_uint_16> out(px.size());
     for (size_t i = 0; i < px.size(); ++i)
         out[i] = png_uint_16(std::lround(std::clamp(double(px[i]), 0.0, 1.0) * 65535.0));
@@ -282,11 +284,8 @@ bool writePng16(const std::string& path, const Image& img, std::string& error) {
 }
 
 bool writeExr(const std::string& path, const Image& img, std::string& error) {
-    if (!consistent(img)) {
-        error = "writeExr: empty or inconsistent image";
-        return false;
-    }
-    std::vector<float> px = asFloats(img);
+    std::vector<float> px;
+    if (!floatPixels(img, "writeExr", px, error)) return false;
     const char* err = nullptr;
     if (SaveEXR(px.data(), img.width, img.height, 4, 0, path.c_str(), &err) < 0) {
         error = "cannot write " + path + (err ? std::string(": ") + err : std::string());
