@@ -1,6 +1,6 @@
 #include <iostream>
 
-#include "app/session.h"
+#include "driver/session.h"
 
 namespace glimmer {
 

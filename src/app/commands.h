@@ -1,50 +1,16 @@
-// The subcommands of the glimmer program. Each returns the process's exit
-// code: 0 success, 1 script or shader errors, 2 usage errors.
+// The subcommands of the glimmer program: CLI11 wiring and one run function
+// each, returning the process's exit code (driver/options.h).
 #pragma once
 #include <string>
 #include <vector>
 
-#include "backends/context.h"
+#include "driver/options.h"
 
 namespace CLI {
 class App;
 }
 
 namespace glimmer {
-
-enum ExitCode { kExitOk = 0, kExitScriptError = 1, kExitUsage = 2 };
-
-struct CommonOptions {
-    std::string script;
-    std::string backend = "auto";
-    std::vector<std::string> includeDirs;
-    std::vector<std::string> sets;  // name=value
-    std::string size;               // WxH
-};
-
-struct RenderOptions : CommonOptions {
-    std::string output = "out.png";
-    std::vector<std::string> dumps;  // UNIT=file.png
-    double time = 0;
-    bool timings = false;
-    bool health = false;  // print the numeric health of every target
-    bool strict = false;  // and exit 1 if any holds NaN, Inf, negatives or values above 65504
-};
-
-struct SheetOptions : CommonOptions {
-    std::vector<std::string> vary;  // NAME=V1,V2,... (columns, then rows)
-    std::string output = "sheet.png";
-};
-
-struct TradeoffOptions {
-    std::string image;  // empty: the grid pattern, generated at `size`
-    std::string size;
-    std::string format = "RGBA16F";
-    int repeat = 5;
-    std::vector<std::string> methods;
-    std::string backend = "auto";
-    std::string output = "tradeoff";
-};
 
 void addRenderCommand(CLI::App& app, RenderOptions& options);
 void addTradeoffCommand(CLI::App& app, TradeoffOptions& options);
@@ -56,8 +22,5 @@ struct ViewOptions;
 void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
 int runCheck(const CommonOptions& options);
-
-// "512x512" -> 512, 512. False on anything else.
-bool parseSize(const std::string& text, int& w, int& h);
 
 }  // namespace glimmer

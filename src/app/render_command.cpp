@@ -4,8 +4,8 @@
 
 #include <fmt/format.h>
 
-#include "app/numeric_health.h"
-#include "app/session.h"
+#include "driver/numeric_health.h"
+#include "driver/session.h"
 #include "image/image.h"
 
 namespace glimmer {

@@ -8,7 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/session.h"
+#include "driver/session.h"
 #include "image/text.h"
 #include "plan/dependencies.h"
 

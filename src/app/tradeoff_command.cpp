@@ -15,8 +15,9 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
-#include "app/pipeline.h"
-#include "app/tradeoff_methods.h"
+#include "driver/prepare_script.h"
+#include "driver/stats.h"
+#include "bloom/blur_methods.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "image/test_images.h"
@@ -36,11 +37,6 @@ struct Row {
     ErrorStats numerical, model;
     Health health;  // of the blurred target: NaN, Inf, negative, above 65504
 };
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0 : v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
 
 int bytesPerTexel(TextureDecl::Format f) {
     switch (f) {
@@ -103,13 +99,13 @@ int runTradeoff(const TradeoffOptions& o) {
         // or its own size, blurred by each method.
         Diagnostics diags;
         LoadedScript loaded;
-        PlanOptions po;
-        if (!o.size.empty() && !parseSize(o.size, po.width, po.height)) {
+        ScriptRequest request;
+        request.script = o.image;
+        if (!o.size.empty() && !parseSize(o.size, request.plan.width, request.plan.height)) {
             std::cerr << fmt::format("glimmer: error: --size '{}' is not WIDTHxHEIGHT\n", o.size);
             return kExitUsage;
         }
-        if (!loadScript(o.image, po, diags, loaded) || diags.hasErrors() ||
-            !renderer->prepare(loaded.plan, diags, loaded.sources)) {
+        if (!prepareScript(request, *renderer, diags, loaded)) {
             printDiagnostics(diags, loaded.sources, std::cerr);
             return kExitScriptError;
         }
@@ -156,12 +152,12 @@ int runTradeoff(const TradeoffOptions& o) {
         std::ofstream(script) << m.script(imagePath, input.width, input.height, textureFormatName(format));
         Diagnostics diags;
         LoadedScript loaded;
-        PlanOptions po;
-        po.keepTargets = {m.outputUnit};
-        po.width = input.width;
-        po.height = input.height;
-        if (!loadScript(script.string(), po, diags, loaded) || diags.hasErrors() ||
-            !renderer->prepare(loaded.plan, diags, loaded.sources)) {
+        ScriptRequest request;
+        request.script = script.string();
+        request.plan.keepTargets = {m.outputUnit};
+        request.plan.width = input.width;
+        request.plan.height = input.height;
+        if (!prepareScript(request, *renderer, diags, loaded)) {
             std::cerr << "\n";
             printDiagnostics(diags, loaded.sources, std::cerr);
             return kExitScriptError;

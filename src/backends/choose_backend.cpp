@@ -1,5 +1,7 @@
 #include "backends/context.h"
 
+#include <vector>
+
 namespace glimmer {
 
 bool parseBackend(const std::string& text, BackendChoice& out) {

@@ -4,7 +4,6 @@
 #include <memory>
 #include <string>
 
-#include "gl/gl_api.h"
 
 namespace glimmer {
 

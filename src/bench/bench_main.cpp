@@ -20,7 +20,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/pipeline.h"
+#include "driver/prepare_script.h"
+#include "driver/stats.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "gl/shader_build.h"
@@ -34,12 +35,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-double median(std::vector<double> v) {
-    if (v.empty()) return 0;
-    std::sort(v.begin(), v.end());
-    return v.size() % 2 ? v[v.size() / 2] : (v[v.size() / 2 - 1] + v[v.size() / 2]) / 2;
-}
 
 struct Options {
     std::string script;
@@ -201,9 +196,10 @@ int benchBackend(const Options& o, const std::string& backendName) {
     std::string rendererName;
     LoadedScript loaded;
     Diagnostics diags;
-    PlanOptions planOptions;
-    planOptions.width = planOptions.height = o.size;
-    if (!loadScript(o.script, planOptions, diags, loaded) || diags.hasErrors()) {
+    ScriptRequest request;
+    request.script = o.script;
+    request.plan.width = request.plan.height = o.size;
+    if (!planScript(request, diags, loaded)) {
         printDiagnostics(diags, loaded.sources, std::cerr);
         return 1;
     }
@@ -223,16 +219,18 @@ int benchBackend(const Options& o, const std::string& backendName) {
             return 1;
         }
         auto r = Renderer::create([&](const char* n) { return ctx->getProcAddress(n); }, why);
+        GlApi timerGl;  // the bench's own table, for timer queries around the renderer's work
+        loadGlApi(timerGl, [&](const char* n) { return ctx->getProcAddress(n); }, why);
         double tStart = msSince(t0);
         auto t1 = Clock::now();
         Diagnostics d;
-        SourceTexts sources;
-        r->prepare(loaded.plan, d, sources);
-        r->gl().Finish();
+        LoadedScript run = loaded;  // the files are read each time, as `glimmer render` does
+        loadAndUpload(*r, run, false, d);
+        r->finish();
         double tCompile = msSince(t1);
         auto t2 = Clock::now();
         r->render(values, 0);
-        r->gl().Finish();
+        r->finish();
         double tRender = msSince(t2);
         auto t3 = Clock::now();
         Image img = r->readScreen();
@@ -257,9 +255,9 @@ int benchBackend(const Options& o, const std::string& backendName) {
                 change.programs = {bloom};
                 std::vector<bool> only = passesToRun(loaded.plan, change);
                 UniformValues v = values;
-                fullFrame = timed(r->gl(), r->gpuTimers(), o.repeat, [&] { r->render(v, 0); });
+                fullFrame = timed(timerGl, r->gpuTimers(), o.repeat, [&] { r->render(v, 0); });
                 int k = 0;
-                addChange = timed(r->gl(), r->gpuTimers(), o.repeat, [&] {
+                addChange = timed(timerGl, r->gpuTimers(), o.repeat, [&] {
                     v.set(bloom, "uAdd", {(k++ % 2) ? 1.0 : 3.0});
                     r->render(v, 0, nullptr, &only);
                 });

@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "app/pipeline.h"
+#include "driver/prepare_script.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "plan/uniform_values.h"
@@ -49,10 +49,11 @@ int formatFigures(const std::string& backendName) {
             format);
         Diagnostics d;
         LoadedScript ls;
-        PlanOptions po;
-        po.keepTargets = {6};
-        auto r = Renderer::create([&](const char* n) { return ctx->getProcAddress(n); }, why);
-        if (!loadScript((dir / "f.glib").string(), po, d, ls) || !r || !r->prepare(ls.plan, d, ls.sources)) {
+        ScriptRequest request;
+        request.script = (dir / "f.glib").string();
+        request.plan.keepTargets = {6};
+        auto r = prepareScript(request, [&](const char* n) { return ctx->getProcAddress(n); }, d, ls);
+        if (!r) {
             printDiagnostics(d, ls.sources, std::cerr);
             return 1;
         }

@@ -13,8 +13,9 @@
 #include <GL/gl.h>
 #include <GL/glext.h>
 
-#include <functional>
 #include <string>
+
+#include "gl/proc_address.h"
 
 namespace glimmer {
 
@@ -46,7 +47,6 @@ struct GlApi {
 #undef GLIMMER_GL_MEMBER
 };
 
-using GetProcAddress = std::function<void*(const char* name)>;
 
 // Fills every entry; false and the missing names in `error` if any is absent.
 bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error);

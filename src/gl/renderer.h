@@ -7,14 +7,16 @@
 #include <string>
 #include <vector>
 
-#include "gl/gl_api.h"
-#include "gl/uniform_upload.h"
+#include "gl/proc_address.h"
 #include "image/image.h"
 #include "lang/diagnostics.h"
 #include "plan/plan.h"
 #include "plan/uniform_values.h"
 
 namespace glimmer {
+
+struct Assets;
+struct GlApi;
 
 struct PassTiming {
     int pass = -1;      // index into Plan::passes
@@ -31,16 +33,18 @@ public:
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
 
-    const GlApi& gl() const { return gl_; }
+    // Waits until every GL command so far has finished (for wall-clock timing).
+    void finish() const;
     std::string rendererName() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     // Whether pass timings come from GPU timer queries (a GPU) rather than
     // glFinish and a wall clock (a CPU renderer, where the queries mean nothing).
     bool gpuTimers() const;
 
-    // Loads images and meshes, compiles and links programs, makes targets.
-    // Only what the needed passes use, unless `everything` (for `check`).
-    // Returns false when diags got errors; the renderer then draws nothing.
-    bool prepare(const Plan& plan, Diagnostics& diags, SourceTexts& sources, bool everything = false);
+    // Uploads what the CPU load step read (images, meshes; see
+    // assets/assets.h), compiles and links programs, makes targets: only what
+    // `assets.used` marks. Returns false when diags got errors; the renderer
+    // then draws nothing. Front ends reach this through driver/prepare_script.h.
+    bool prepare(const Plan& plan, const Assets& assets, Diagnostics& diags, bool everything = false);
 
     // Draws every needed pass with these uniform values, or only the passes
     // flagged in `only` (see plan/dependencies.h); the others keep what they
@@ -53,9 +57,10 @@ public:
     // framebuffer 0, scaled to fit inside w x h and centred.
     void present(int texture, int windowWidth, int windowHeight) const;
 
-    // What the linked shaders declare, for sliders of the right kind; null
-    // when the program was not built.
-    const std::vector<ActiveUniform>* activeUniformsOf(int program) const;
+    // What a linked program declares `name` as, for a slider of the right
+    // kind; Unknown when the program was not built or does not use it.
+    enum class UniformKind { Unknown, Float, Int, Bool, Sampler, Other };
+    UniformKind uniformKind(int program, const std::string& name) const;
     // glman's mouse rotate and zoom: turns and scales everything drawn to the
     // screen about the world origin as seen by the eye. It goes into the
     // projection, so shaders see the script's own ModelView matrix.
@@ -83,7 +88,7 @@ public:
     std::vector<int> renderTargets() const;
 
 private:
-    Renderer() = default;
+    Renderer();
     struct Target;
     struct Program;
     struct MeshBuffers;
@@ -99,7 +104,7 @@ private:
     // kept for the renderer's life.
     unsigned noiseTexture(bool threeD, int res);
 
-    GlApi gl_{};
+    std::unique_ptr<GlApi> gl_;  // the loaded GL table (gl/gl_api.h), kept out of this header
     std::unique_ptr<Plan> plan_;  // a copy: the caller's plan may move (a viewer swapping scripts)
     struct TextureObject {
         unsigned id = 0;  // 0: not made, nothing needed it

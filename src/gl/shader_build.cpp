@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -122,19 +121,18 @@ std::string infoLog(const GlApi& gl, unsigned object, bool isProgram) {
 
 }  // namespace
 
-unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl, const std::string& scriptFile,
-                      Diagnostics& diags, SourceTexts& sources) {
+unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
+                      const std::vector<std::optional<std::string>>& stageTexts, const std::string& scriptFile,
+                      Diagnostics& diags) {
     std::vector<unsigned> shaders;
     bool ok = true;
-    for (const auto& stage : decl.stages) {
-        std::ifstream f(stage.path, std::ios::binary);
-        if (!f) {
-            diags.error(scriptFile, stage.loc, fmt::format("cannot read shader '{}'", stage.shown));
+    for (size_t k = 0; k < decl.stages.size(); ++k) {
+        const ShaderStage& stage = decl.stages[k];
+        if (k >= stageTexts.size() || !stageTexts[k]) {  // unreadable: the load step said so
             ok = false;
             continue;
         }
-        std::string text((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-        sources.add(stage.path, text);
+        const std::string& text = *stageTexts[k];
         PreparedSource src = prepareSource(text, decl.gstap ? kGstapPrelude : "");
         unsigned sh = gl.CreateShader(stageEnum(stage.kind));
         const char* p = src.text.c_str();

@@ -1,6 +1,7 @@
 // Compiling and linking a Program's shaders, with compiler messages mapped
 // back to the shader file and line the user wrote.
 #pragma once
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,10 +32,12 @@ void mapCompilerLog(const std::string& log, const PreparedSource& src, const std
                     const std::string& fallbackFile, SourceLoc fallback, Severity defaultSeverity,
                     Diagnostics& diags);
 
-// Reads, compiles and links every stage of `decl`. Returns the program
-// (0 on failure, with diagnostics). Shader texts are added to `sources`.
-unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl, const std::string& scriptFile,
-                      Diagnostics& diags, SourceTexts& sources);
+// Compiles and links every stage of `decl` from its text (read by the CPU
+// load step, assets/; nullopt for a stage that could not be read, which is
+// already an error). Returns the program (0 on failure, with diagnostics).
+unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
+                      const std::vector<std::optional<std::string>>& stageTexts, const std::string& scriptFile,
+                      Diagnostics& diags);
 
 // The attribute location glman's `Tangent` is bound to before linking.
 constexpr int kTangentLocation = 7;

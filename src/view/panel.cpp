@@ -9,10 +9,7 @@ namespace glimmer {
 namespace {
 
 bool isIntType(const Renderer& r, int program, const std::string& name) {
-    if (const auto* active = r.activeUniformsOf(program))
-        for (const auto& u : *active)
-            if (u.name == name) return u.type == GL_INT;
-    return false;
+    return r.uniformKind(program, name) == Renderer::UniformKind::Int;
 }
 
 std::string valuesText(const std::vector<double>& v) {

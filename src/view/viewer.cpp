@@ -16,7 +16,9 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "app/commands.h"
+#include "driver/options.h"
+#include "driver/prepare_script.h"
+#include "gl/window_frame.h"
 #include "image/text.h"
 #include "plan/dependencies.h"
 
@@ -53,19 +55,15 @@ public:
     // The script at w x h, parsed, planned and prepared on a renderer of its
     // own. False (with diagnostics) when anything failed; `renderer` is then null.
     bool prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer, Diagnostics& diags) {
-        PlanOptions planOptions;
-        planOptions.includeDirs = options_.includeDirs;
-        planOptions.width = w;
-        planOptions.height = h;
+        ScriptRequest request;
+        request.script = options_.script;
+        request.plan.includeDirs = options_.includeDirs;
+        request.plan.width = w;
+        request.plan.height = h;
         // Every target can be looked at in the pass inspector, so every pass
         // that draws into one runs, read by a later pass or not.
-        for (int unit = 0; unit < 32; ++unit) planOptions.keepTargets.insert(unit);
-        bool read = loadScript(options_.script, planOptions, diags, next);
-        if (!read || diags.hasErrors()) return false;
-        std::string err;
-        renderer = Renderer::create([&](const char* n) { return window_.getProcAddress(n); }, err);
-        if (!renderer) diags.error(options_.script, {}, err);
-        else if (!renderer->prepare(next.plan, diags, next.sources)) renderer.reset();
+        for (int unit = 0; unit < 32; ++unit) request.plan.keepTargets.insert(unit);
+        renderer = prepareScript(request, [&](const char* n) { return window_.getProcAddress(n); }, diags, next);
         return renderer != nullptr;
     }
 
@@ -102,6 +100,12 @@ public:
     }
 
     int run(CommandQueue& queue) {
+        std::string why;
+        frame_ = WindowFrame::create([&](const char* n) { return window_.getProcAddress(n); }, why);
+        if (!frame_) {
+            std::cerr << "glimmer: error: " << why << "\n";
+            return kExitScriptError;
+        }
         load("loaded");
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
@@ -158,11 +162,7 @@ public:
             }
             ImGui::Render();
             glfwGetFramebufferSize(window_.handle(), &fbw, &fbh);
-            const GlApi& gl = s_.renderer ? s_.renderer->gl() : fallbackGl();
-            gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-            gl.Viewport(0, 0, fbw, fbh);
-            gl.ClearColor(0.12f, 0.12f, 0.14f, 1.f);
-            gl.Clear(GL_COLOR_BUFFER_BIT);
+            if (frame_) frame_->begin(fbw, fbh, 0.12f, 0.12f, 0.14f);
             if (s_.renderer) s_.renderer->present(s_.shownTexture, fbw, fbh);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(window_.handle());
@@ -175,15 +175,6 @@ public:
     }
 
 private:
-    const GlApi& fallbackGl() {
-        if (!fallbackLoaded_) {
-            std::string err;
-            loadGlApi(fallback_, [&](const char* n) { return window_.getProcAddress(n); }, err);
-            fallbackLoaded_ = true;
-        }
-        return fallback_;
-    }
-
     void watchFilesOf(const Plan& plan) {
         std::set<std::string> files = {options_.script};
         for (const auto& p : watch_.paths()) files.insert(p);  // keep what a broken edit may still need
@@ -344,8 +335,7 @@ private:
     std::string lastReport_;
     bool dragging_ = false;
     double lastX_ = 0, lastY_ = 0;
-    GlApi fallback_{};
-    bool fallbackLoaded_ = false;
+    std::unique_ptr<WindowFrame> frame_;  // clears the window; the viewer itself calls no GL
 };
 
 // The window's starting size: --size, else the script's WindowSize, else 600x600.

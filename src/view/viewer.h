@@ -9,8 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/numeric_health.h"
-#include "app/pipeline.h"
+#include "driver/load_script.h"
+#include "driver/numeric_health.h"
 #include "backends/glfw_window.h"
 #include "gl/renderer.h"
 #include "plan/uniform_values.h"

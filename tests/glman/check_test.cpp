@@ -72,8 +72,7 @@ TEST(GlmanCheck, NoiseIsMadeOnlyForProgramsThatDeclareIt) {
     ASSERT_TRUE(noisy->prepared) << noisy->printed();
     EXPECT_EQ(noisy->renderer->noiseTexturesMade(), 2u);
     // A second prepare of the same renderer reuses them.
-    SourceTexts sources;
-    ASSERT_TRUE(noisy->renderer->prepare(noisy->loaded.plan, noisy->diags, sources));
+    ASSERT_TRUE(loadAndUpload(*noisy->renderer, noisy->loaded, false, noisy->diags));
     EXPECT_EQ(noisy->renderer->noiseTexturesMade(), 2u);
 }
 

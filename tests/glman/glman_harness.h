@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "app/pipeline.h"
+#include "driver/prepare_script.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "image/image.h"
@@ -62,7 +62,7 @@ inline std::unique_ptr<Run> runPipeline(const std::string& path, bool everything
         return r;
     }
     if (r->diags.hasErrors()) return r;
-    r->prepared = r->renderer->prepare(r->loaded.plan, r->diags, r->loaded.sources, everything);
+    r->prepared = loadAndUpload(*r->renderer, r->loaded, everything, r->diags);
     if (r->prepared && draw) {
         UniformValues values(r->loaded.plan);
         r->renderer->render(values, 0.0);

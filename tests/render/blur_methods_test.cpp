@@ -9,7 +9,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/tradeoff_methods.h"
+#include "bloom/blur_methods.h"
 #include "reference/metrics.h"
 #include "render_harness.h"
 

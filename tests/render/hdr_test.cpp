@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "app/numeric_health.h"
+#include "driver/numeric_health.h"
 #include "image/test_images.h"
 #include "render_harness.h"
 
@@ -116,7 +116,7 @@ TEST(Hdr, HealthReportFindsEachProblem) {
     auto ctx = createContext(choice, why);
     ASSERT_TRUE(ctx) << why;
     auto r = Renderer::create([&](const char* n) { return ctx->getProcAddress(n); }, why);
-    ASSERT_TRUE(r && r->prepare(loaded.plan, diags, loaded.sources));
+    ASSERT_TRUE(r && loadAndUpload(*r, loaded, false, diags));
     r->render(UniformValues(loaded.plan), 0);
     auto report = measureHealth(*r, loaded.plan);
     ASSERT_EQ(report.size(), 3u);

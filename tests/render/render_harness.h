@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/pipeline.h"
+#include "driver/prepare_script.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "image/image.h"
@@ -63,7 +63,7 @@ inline Rendered renderScript(const std::string& backendName, const std::string& 
     if (!context) return fail(why);
     auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
     if (!renderer) return fail(why);
-    if (!renderer->prepare(loaded.plan, diags, loaded.sources)) return fail("prepare failed");
+    if (!loadAndUpload(*renderer, loaded, false, diags)) return fail("prepare failed");
     renderer->render(values, 0.0);
     r.screen = renderer->readScreen();
     for (int u : readUnits) {

@@ -1,4 +1,4 @@
-#include "app/pipeline.h"
+#include "driver/load_script.h"
 
 #include <fstream>
 #include <ostream>

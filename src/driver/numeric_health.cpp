@@ -1,4 +1,4 @@
-#include "app/numeric_health.h"
+#include "driver/numeric_health.h"
 
 #include <cmath>
 

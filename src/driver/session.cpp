@@ -1,9 +1,11 @@
-#include "app/session.h"
+#include "driver/session.h"
 
 #include <chrono>
 #include <iostream>
 
 #include <fmt/format.h>
+
+#include "driver/prepare_script.h"
 
 namespace glimmer {
 
@@ -11,7 +13,10 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
                                Session& s) {
     using Clock = std::chrono::steady_clock;
     Diagnostics diags;
-    PlanOptions planOptions;
+    ScriptRequest request;
+    request.script = options.script;
+    request.everything = everything;
+    PlanOptions& planOptions = request.plan;
     planOptions.includeDirs = options.includeDirs;
     planOptions.keepTargets = keepUnits;
     if (!options.size.empty() && !parseSize(options.size, planOptions.width, planOptions.height)) {
@@ -23,7 +28,7 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
         std::cerr << fmt::format("glimmer: error: unknown backend '{}'\n", options.backend);
         return kExitUsage;
     }
-    if (!loadScript(options.script, planOptions, diags, s.loaded)) {
+    if (!loadScript(request.script, planOptions, diags, s.loaded)) {
         printDiagnostics(diags, s.loaded.sources, std::cerr);
         return kExitUsage;
     }
@@ -40,6 +45,9 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
         return scriptOk ? kExitUsage : kExitScriptError;
     }
 
+    // Files are read before a context is made: a missing image costs no driver start-up.
+    auto l0 = Clock::now();
+    bool filesOk = loadFiles(s.loaded, everything, diags);
     auto t0 = Clock::now();
     std::string why;
     s.context = createContext(backend, why);
@@ -55,10 +63,10 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
         return kExitScriptError;
     }
     auto t1 = Clock::now();
-    bool ok = s.renderer->prepare(s.loaded.plan, diags, s.loaded.sources, everything);
+    bool ok = uploadScript(*s.renderer, s.loaded, everything, diags) && filesOk;
     auto t2 = Clock::now();
     s.startupMs = std::chrono::duration<double, std::milli>(t1 - t0).count();
-    s.compileMs = std::chrono::duration<double, std::milli>(t2 - t1).count();
+    s.compileMs = std::chrono::duration<double, std::milli>((t2 - t1) + (t0 - l0)).count();
     printDiagnostics(diags, s.loaded.sources, std::cerr);
     if (!ok) return kExitScriptError;
     return std::nullopt;

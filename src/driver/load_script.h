@@ -1,9 +1,10 @@
-// The steps every front end shares: read a script, parse it, plan it; and
-// print what was found along the way.
+// The steps every front end shares before any GL: read a script, parse it,
+// plan it; and print what was found along the way.
 #pragma once
 #include <iosfwd>
 #include <string>
 
+#include "assets/assets.h"
 #include "lang/diagnostics.h"
 #include "lang/script.h"
 #include "plan/plan.h"
@@ -13,7 +14,8 @@ namespace glimmer {
 struct LoadedScript {
     Script script;
     Plan plan;
-    SourceTexts sources;  // the script's text, and shader texts once compiled
+    SourceTexts sources;  // the script's text, and shader texts once read
+    Assets assets;        // the files it names, decoded (driver/prepare_script.h fills it)
 };
 
 // Reads and parses `path` and builds its plan. False when the file cannot be

@@ -1,12 +1,13 @@
-// A script loaded, planned and prepared on a GL context: what `render` and
-// `check` both start from.
+// A script loaded, planned and prepared on a GL context of its own: what
+// `render`, `check` and `sheet` start from. The steps themselves are
+// driver/prepare_script.h; this adds options, a context and printing.
 #pragma once
 #include <memory>
 #include <optional>
 #include <set>
 
-#include "app/commands.h"
-#include "app/pipeline.h"
+#include "driver/load_script.h"
+#include "driver/options.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "plan/uniform_values.h"

@@ -1,4 +1,4 @@
-#include "app/tradeoff_methods.h"
+#include "bloom/blur_methods.h"
 
 #include <cmath>
 

@@ -1,0 +1,68 @@
+#include "assets/assets.h"
+
+#include <fstream>
+
+#include <fmt/format.h>
+
+#include "image/cubemap.h"
+
+namespace glimmer {
+namespace {
+
+bool loadTexture(const TextureDecl& t, TextureFile& out, std::string& why) {
+    if (t.source != TextureDecl::Source::File) return true;  // a target, or an empty 3-D texture
+    if (t.kind == TextureDecl::Kind::Cube) {
+        std::array<std::string, 6> paths;
+        for (size_t k = 0; k < 6; ++k) paths[k] = t.facePaths.at(k);
+        out.loaded = loadCubeMap(paths, out.faces, why);
+    } else if (t.kind == TextureDecl::Kind::Tex3D) {
+        out.loaded = loadVolume(t.path, out.volume, why);
+    } else {
+        out.loaded = loadImage(t.path, out.image, why);
+    }
+    return out.loaded;
+}
+
+std::optional<std::string> readShader(const ShaderStage& stage) {
+    std::ifstream f(stage.path, std::ios::binary);
+    if (!f) return std::nullopt;
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTexts& sources, Assets& out) {
+    const std::string& file = plan.scriptFile;
+    int errorsBefore = diags.errorCount();
+    out.used = resourcesUsed(plan, everything);
+    out.textures.assign(plan.textures.size(), {});
+    out.meshes.assign(plan.meshes.size(), std::nullopt);
+    out.shaderTexts.assign(plan.programs.size(), {});
+
+    for (size_t i = 0; i < plan.textures.size(); ++i) {
+        if (!out.used.textures[i]) continue;
+        const TextureDecl& t = plan.textures[i];
+        std::string why;
+        if (!loadTexture(t, out.textures[i], why))
+            diags.error(file, t.loc, fmt::format("cannot load '{}': {}", t.shown, why));
+    }
+    for (size_t i = 0; i < plan.meshes.size(); ++i) {
+        if (!out.used.meshes[i]) continue;
+        Mesh mesh;
+        std::string why;
+        if (buildMesh(plan.meshes[i], mesh, why)) out.meshes[i] = std::move(mesh);
+        else diags.error(file, plan.meshes[i].loc, why);
+    }
+    for (size_t i = 0; i < plan.programs.size(); ++i) {
+        if (!out.used.programs[i]) continue;
+        for (const auto& stage : plan.programs[i].stages) {
+            auto text = readShader(stage);
+            if (text) sources.add(stage.path, *text);
+            else diags.error(file, stage.loc, fmt::format("cannot read shader '{}'", stage.shown));
+            out.shaderTexts[i].push_back(std::move(text));
+        }
+    }
+    return diags.errorCount() == errorsBefore;
+}
+
+}  // namespace glimmer

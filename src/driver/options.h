@@ -1,0 +1,49 @@
+// What every front end is asked to do, as plain values: the command line
+// (src/app) fills these in, the driver and the front ends read them. Exit
+// codes and the small parsers every command shares live here too, so the
+// viewer, the benchmarks and the tests need nothing from the executable.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace glimmer {
+
+// The process's exit code: 0 success, 1 script or shader errors, 2 usage errors.
+enum ExitCode { kExitOk = 0, kExitScriptError = 1, kExitUsage = 2 };
+
+struct CommonOptions {
+    std::string script;
+    std::string backend = "auto";
+    std::vector<std::string> includeDirs;
+    std::vector<std::string> sets;  // name=value
+    std::string size;               // WxH
+};
+
+struct RenderOptions : CommonOptions {
+    std::string output = "out.png";
+    std::vector<std::string> dumps;  // UNIT=file.png
+    double time = 0;
+    bool timings = false;
+    bool health = false;  // print the numeric health of every target
+    bool strict = false;  // and exit 1 if any holds NaN, Inf, negatives or values above 65504
+};
+
+struct SheetOptions : CommonOptions {
+    std::vector<std::string> vary;  // NAME=V1,V2,... (columns, then rows)
+    std::string output = "sheet.png";
+};
+
+struct TradeoffOptions {
+    std::string image;  // empty: the grid pattern, generated at `size`
+    std::string size;
+    std::string format = "RGBA16F";
+    int repeat = 5;
+    std::vector<std::string> methods;
+    std::string backend = "auto";
+    std::string output = "tradeoff";
+};
+
+// "512x512" -> 512, 512. False on anything else, or a side outside 1..16384.
+bool parseSize(const std::string& text, int& w, int& h);
+
+}  // namespace glimmer
