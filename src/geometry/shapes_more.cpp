@@ -7,6 +7,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include "geometry/mesh.h"
+#include "geometry/planarity.h"
 #include "geometry/mesh_builder.h"
 #include "util/pcg32.h"
 
@@ -50,28 +51,12 @@ void addCap(Mesh& m, float radius, float y, int slices, bool up) {
     }
 }
 
-// Everything in one plane (within a small fraction of the mesh's size)?
+// Everything the triangles touch in one plane (geometry/planarity.h)?
 bool planar(const Mesh& m) {
-    if (m.indices.size() < 3) return true;
-    glm::vec3 lo{INFINITY}, hi{-INFINITY};
-    for (const MeshVertex& v : m.vertices) {
-        lo = glm::min(lo, v.position);
-        hi = glm::max(hi, v.position);
-    }
-    const float extent = glm::length(hi - lo);
-    // The plane of the largest triangle.
-    glm::vec3 best{0.f}, origin{0.f};
-    for (size_t t = 0; t + 2 < m.indices.size(); t += 3) {
-        const glm::vec3 a = m.vertices[m.indices[t]].position;
-        const glm::vec3 g = glm::cross(m.vertices[m.indices[t + 1]].position - a,
-                                       m.vertices[m.indices[t + 2]].position - a);
-        if (glm::length(g) > glm::length(best)) best = g, origin = a;
-    }
-    if (glm::length(best) == 0.f) return true;
-    const glm::vec3 n = glm::normalize(best);
-    for (std::uint32_t i : m.indices)
-        if (std::abs(glm::dot(m.vertices[i].position - origin, n)) > 1e-5f * extent) return false;
-    return true;
+    std::vector<glm::dvec3> points;
+    points.reserve(m.indices.size());
+    for (std::uint32_t i : m.indices) points.emplace_back(m.vertices[i].position);
+    return coplanar(points);
 }
 
 Mesh pointsMesh(const std::vector<glm::vec3>& positions, float size) {

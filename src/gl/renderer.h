@@ -93,6 +93,16 @@ private:
     struct Program;
     struct MeshBuffers;
     void releaseAll();
+    // The steps of prepare (renderer_prepare.cpp), in order.
+    void uploadTextures(const Plan& plan, const Assets& assets);
+    void uploadMeshes(const Plan& plan, const Assets& assets);
+    void buildPrograms(const Plan& plan, const Assets& assets, Diagnostics& diags);
+    // Shapes a program cannot draw (GL would refuse them with an error): warned, not drawn.
+    void warnUndrawable(const Plan& plan, bool everything, Diagnostics& diags);
+    // One framebuffer per distinct set of textures written at once.
+    void makeTargets(const Plan& plan, bool everything, Diagnostics& diags);
+    // The screen: an offscreen framebuffer of the output size, read back the same way on every backend.
+    void makeScreen(const Plan& plan, Diagnostics& diags);
     // A depth renderbuffer of this size, attached to the bound framebuffer.
     unsigned attachDepth(int width, int height);
     void drawStep(const Draw& d, const UniformValues& values, double time, const std::vector<int>& targets);

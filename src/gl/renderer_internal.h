@@ -1,0 +1,136 @@
+// What the renderer's files share and nobody else sees: its GL objects and
+// small GL helpers. Private to src/gl.
+#pragma once
+#include "gl/renderer.h"
+
+#include <array>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <set>
+
+#include <fmt/format.h>
+#include <glm/gtc/matrix_inverse.hpp>
+#include <glm/gtc/type_ptr.hpp>
+
+#include "assets/assets.h"
+#include "geometry/mesh.h"
+#include "gl/gl_api.h"
+#include "gl/shader_build.h"
+#include "gl/uniform_upload.h"
+#include "image/cubemap.h"
+#include "image/noise.h"
+
+namespace glimmer {
+
+struct Renderer::Target {
+    std::vector<int> textures;  // empty: the screen
+    unsigned fbo = 0;
+    unsigned depth = 0;         // renderbuffer, only when some pass draws depth into it
+    int width = 0, height = 0;
+};
+
+struct Renderer::Program {
+    unsigned id = 0;
+    std::vector<ActiveUniform> uniforms;
+    std::vector<const UniformSetting*> settings;  // per uniform: how the script wrote it (null: not set)
+    int timerLocation = -1;
+    bool usesTangent = false;
+    bool noise2 = false, noise3 = false;  // declares the built-in Noise2 / Noise3
+    bool tessellated = false;             // has a tessellation evaluation shader: draws patches only
+    GLint geometryInput = 0;              // the geometry shader's input primitive; 0: none
+    std::string name;
+};
+
+struct Renderer::MeshBuffers {
+    unsigned vbo = 0, ibo = 0;
+    GLsizei count = 0;
+    GLenum primitive = GL_TRIANGLES;
+};
+
+namespace renderer_detail {
+
+
+// Reverses the order of `height` rows of `rowLength` values: images are
+// top row first, OpenGL's rows start at the bottom.
+template <typename T>
+inline std::vector<T> flipRows(const std::vector<T>& rows, int height) {
+    std::vector<T> out(rows.size());
+    size_t row = height > 0 ? rows.size() / size_t(height) : 0;
+    for (int y = 0; y < height; ++y)
+        std::copy_n(rows.begin() + std::ptrdiff_t(size_t(y) * row), row,
+                    out.begin() + std::ptrdiff_t(size_t(height - 1 - y) * row));
+    return out;
+}
+
+inline Image flipRows(Image img) {
+    img.u8 = flipRows(img.u8, img.height);
+    return img;
+}
+
+// Every texture is sampled the same way: linear, and OpenGL's default wrap
+// (cube maps clamp, so a face's edge does not blend in its opposite edge).
+inline void textureParameters(const GlApi& gl, GLenum target = GL_TEXTURE_2D) {
+    GLint wrap = target == GL_TEXTURE_CUBE_MAP ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+    gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    gl.TexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    gl.TexParameteri(target, GL_TEXTURE_WRAP_S, wrap);
+    gl.TexParameteri(target, GL_TEXTURE_WRAP_T, wrap);
+    if (target != GL_TEXTURE_2D) gl.TexParameteri(target, GL_TEXTURE_WRAP_R, wrap);
+}
+
+inline GLenum textureTarget(TextureDecl::Kind k) {
+    switch (k) {
+    case TextureDecl::Kind::Tex2D: return GL_TEXTURE_2D;
+    case TextureDecl::Kind::Tex3D: return GL_TEXTURE_3D;
+    case TextureDecl::Kind::Cube: return GL_TEXTURE_CUBE_MAP;
+    }
+    return GL_TEXTURE_2D;
+}
+
+constexpr GLenum kTargets[] = {GL_TEXTURE_2D, GL_TEXTURE_3D, GL_TEXTURE_CUBE_MAP};
+
+inline void uploadVolume(const GlApi& gl, const Volume& v) {
+    if (v.type == Image::Type::U8)
+        gl.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA8, v.width, v.height, v.depth, 0, GL_RGBA, GL_UNSIGNED_BYTE, v.u8.data());
+    else
+        gl.TexImage3D(GL_TEXTURE_3D, 0, GL_RGBA32F, v.width, v.height, v.depth, 0, GL_RGBA, GL_FLOAT, v.f32.data());
+}
+
+inline GLenum internalFormat(TextureDecl::Format f) {
+    switch (f) {
+    case TextureDecl::Format::RGBA8: return GL_RGBA8;
+    case TextureDecl::Format::RGBA16F: return GL_RGBA16F;
+    case TextureDecl::Format::RGBA32F: return GL_RGBA32F;
+    case TextureDecl::Format::R11F_G11F_B10F: return GL_R11F_G11F_B10F;
+    }
+    return GL_RGBA8;
+}
+
+inline GLenum glPrimitive(Mesh::Primitive p) {
+    switch (p) {
+    case Mesh::Primitive::Triangles: return GL_TRIANGLES;
+    case Mesh::Primitive::Lines: return GL_LINES;
+    case Mesh::Primitive::Points: return GL_POINTS;
+    case Mesh::Primitive::LinesAdjacency: return GL_LINES_ADJACENCY;
+    case Mesh::Primitive::TrianglesAdjacency: return GL_TRIANGLES_ADJACENCY;
+    case Mesh::Primitive::Patches: return GL_PATCHES;
+    }
+    return GL_TRIANGLES;
+}
+
+inline const char* primitiveName(GLenum p) {
+    switch (p) {
+    case GL_POINTS: return "points";
+    case GL_LINES: return "lines";
+    case GL_LINES_ADJACENCY: return "lines_adjacency";
+    case GL_TRIANGLES: return "triangles";
+    case GL_TRIANGLES_ADJACENCY: return "triangles_adjacency";
+    case GL_PATCHES: return "patches";
+    default: return "another primitive";
+    }
+}
+
+}  // namespace renderer_detail
+}  // namespace glimmer

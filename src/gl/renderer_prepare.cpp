@@ -1,0 +1,244 @@
+// Renderer::prepare: uploading what the CPU load step read, building
+// programs, making render targets and the screen.
+#include "gl/renderer_internal.h"
+
+#include <fmt/format.h>
+
+namespace glimmer {
+using namespace renderer_detail;
+
+bool Renderer::prepare(const Plan& plan, const Assets& assets, Diagnostics& diags, bool everything) {
+    releaseAll();
+    plan_ = std::make_unique<Plan>(plan);
+    textures_.assign(plan.textures.size(), {});
+    meshes_.resize(plan.meshes.size());
+    programs_.resize(plan.programs.size());
+    int errorsBefore = diags.errorCount();
+    uploadTextures(plan, assets);
+    gl_->Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    uploadMeshes(plan, assets);
+    buildPrograms(plan, assets, diags);
+    warnUndrawable(plan, everything, diags);
+    makeTargets(plan, everything, diags);
+    makeScreen(plan, diags);
+    if (GLenum e = gl_->GetError(); e != GL_NO_ERROR)
+        diags.error(plan.scriptFile, {}, fmt::format("OpenGL error 0x{:04x} while loading the script", e));
+    return diags.errorCount() == errorsBefore;
+}
+
+// Images, cube maps, volumes and empty textures, each on its own target.
+void Renderer::uploadTextures(const Plan& plan, const Assets& assets) {
+    const std::vector<bool>& texUsed = assets.used.textures;
+    for (size_t i = 0; i < plan.textures.size(); ++i) {
+        if (!texUsed[i]) continue;
+        const TextureDecl& t = plan.textures[i];
+        const GLenum target = textureTarget(t.kind);
+        const bool fromFile = t.source == TextureDecl::Source::File;
+        const bool file3D = t.kind == TextureDecl::Kind::Tex3D && fromFile;
+        const TextureFile& loaded = assets.textures[i];
+        if (fromFile && !loaded.loaded) continue;  // the load step said why
+        const Image& img = loaded.image;
+        Volume blank;  // an empty Texture3D: zeros of the size written
+        const Volume& vol = file3D ? loaded.volume : blank;
+        const std::array<Image, 6>& faces = loaded.faces;
+        unsigned id = 0;
+        gl_->GenTextures(1, &id);
+        gl_->BindTexture(target, id);
+        textureParameters(*gl_, target);
+        gl_->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        TextureObject obj{id, target, t.width, t.height};
+        if (t.kind == TextureDecl::Kind::Cube) {
+            // OpenGL's cube faces have t = 0 at the top as seen from inside
+            // (see image/cubemap.h): the faces go up as they are, not flipped.
+            for (size_t k = 0; k < 6; ++k) {
+                const Image& f = faces[k];
+                GLenum face = GLenum(GL_TEXTURE_CUBE_MAP_POSITIVE_X + k);
+                if (f.type == Image::Type::U8)
+                    gl_->TexImage2D(face, 0, GL_RGBA8, f.width, f.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, f.u8.data());
+                else
+                    gl_->TexImage2D(face, 0, GL_RGBA32F, f.width, f.height, 0, GL_RGBA, GL_FLOAT, f.f32.data());
+            }
+            obj.width = faces[0].width;
+            obj.height = faces[0].height;
+        } else if (t.kind == TextureDecl::Kind::Tex3D) {
+            if (!file3D) {
+                blank.width = t.width;
+                blank.height = t.height;
+                blank.depth = t.depth;
+                blank.u8.assign(size_t(t.width) * size_t(t.height) * size_t(t.depth) * 4, 0);
+            }
+            uploadVolume(*gl_, vol);
+            obj.width = vol.width;
+            obj.height = vol.height;
+        } else if (t.source == TextureDecl::Source::File) {
+            // Image rows run top-down; OpenGL's t = 0 is the bottom row.
+            if (img.type == Image::Type::U8)
+                gl_->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, img.width, img.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                               flipRows(img.u8, img.height).data());
+            else
+                gl_->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, img.width, img.height, 0, GL_RGBA, GL_FLOAT,
+                               flipRows(img.f32, img.height).data());
+            obj.floatData = img.type == Image::Type::F32;
+            obj.width = img.width;
+            obj.height = img.height;
+        } else {
+            // Start targets black rather than with whatever memory held, in
+            // the format the script asked for.
+            std::vector<float> zeros(size_t(t.width) * size_t(t.height) * 4, 0.f);
+            gl_->TexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat(t.format)), t.width, t.height, 0, GL_RGBA, GL_FLOAT,
+                           zeros.data());
+            if (t.mips) {
+                gl_->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+                gl_->GenerateMipmap(GL_TEXTURE_2D);
+            }
+            obj.format = t.format;
+            obj.mips = t.mips;
+            obj.floatData = isFloatFormat(t.format);
+        }
+        gl_->BindTexture(target, 0);
+        textures_[i] = obj;
+    }
+}
+
+// Vertex and index buffers of every mesh the load step built.
+void Renderer::uploadMeshes(const Plan& plan, const Assets& assets) {
+    const std::vector<bool>& meshUsed = assets.used.meshes;
+    for (size_t i = 0; i < plan.meshes.size(); ++i) {
+        if (!meshUsed[i]) continue;
+        if (!assets.meshes[i]) continue;  // the load step said why
+        const Mesh& mesh = *assets.meshes[i];
+        auto b = std::make_unique<MeshBuffers>();
+        gl_->GenBuffers(1, &b->vbo);
+        gl_->BindBuffer(GL_ARRAY_BUFFER, b->vbo);
+        gl_->BufferData(GL_ARRAY_BUFFER, GLsizeiptr(mesh.vertices.size() * sizeof(MeshVertex)), mesh.vertices.data(),
+                       GL_STATIC_DRAW);
+        gl_->GenBuffers(1, &b->ibo);
+        gl_->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, b->ibo);
+        gl_->BufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(mesh.indices.size() * sizeof(std::uint32_t)),
+                       mesh.indices.data(), GL_STATIC_DRAW);
+        b->count = GLsizei(mesh.indices.size());
+        b->primitive = glPrimitive(mesh.primitive);
+        meshes_[i] = std::move(b);
+    }
+    gl_->BindBuffer(GL_ARRAY_BUFFER, 0);
+    gl_->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
+}
+
+// Compiles and links each used Program and learns what it declares.
+void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics& diags) {
+    const std::string& file = plan.scriptFile;
+    const std::vector<bool>& progUsed = assets.used.programs;
+    for (size_t i = 0; i < plan.programs.size(); ++i) {
+        if (!progUsed[i]) continue;
+        const ProgramDecl& decl = plan.programs[i];
+        unsigned id = buildProgram(*gl_, decl, assets.shaderTexts[i], file, diags);
+        if (!id) continue;
+        auto p = std::make_unique<Program>();
+        p->id = id;
+        p->uniforms = activeUniforms(*gl_, id);
+        p->timerLocation = gl_->GetUniformLocation(id, "Timer");
+        p->usesTangent = gl_->GetAttribLocation(id, "Tangent") == kTangentLocation;
+        p->name = decl.name;
+        for (const auto& st : decl.stages) {
+            if (st.kind == ShaderStage::Kind::TessEvaluation) p->tessellated = true;
+            if (st.kind == ShaderStage::Kind::Geometry) gl_->GetProgramiv(id, GL_GEOMETRY_INPUT_TYPE, &p->geometryInput);
+        }
+        checkUniformSettings(decl, p->uniforms, file, diags);
+        for (const auto& u : p->uniforms) {
+            const UniformSetting* setting = nullptr;
+            for (const auto& st : decl.uniforms)
+                if (st.name == u.name) setting = &st;
+            p->settings.push_back(setting);
+            // glman's built-in noise: Noise2 on unit 2, Noise3 on unit 3,
+            // made only for programs that declare them.
+            bool is2 = u.name == "Noise2", is3 = u.name == "Noise3";
+            if (!is2 && !is3) continue;
+            GLenum want = is2 ? GL_SAMPLER_2D : GL_SAMPLER_3D;
+            if (u.type != want) {
+                diags.warning(file, decl.loc, fmt::format("Program {} declares {} as another type; the built-in noise "
+                                                          "is a {}", decl.name, u.name, is2 ? "sampler2D" : "sampler3D"));
+                continue;
+            }
+            (is2 ? p->noise2 : p->noise3) = true;
+            noiseTexture(is3, is2 ? plan.noise2DRes : plan.noise3DRes);
+            if (!setting) {
+                gl_->UseProgram(id);
+                gl_->Uniform1i(u.location, is2 ? 2 : 3);
+                gl_->UseProgram(0);
+            }
+        }
+        programs_[i] = std::move(p);
+    }
+}
+
+void Renderer::warnUndrawable(const Plan& plan, bool everything, Diagnostics& diags) {
+    const std::string& file = plan.scriptFile;
+    // Shapes a program cannot draw (GL would refuse them with an error).
+    std::set<std::pair<int, int>> told;
+    for (const auto& pass : plan.passes) {
+        if (!pass.needed && !everything) continue;
+        for (const auto& st : pass.steps) {
+            if (st.kind != Step::Kind::Draw || !meshes_[st.draw.mesh]) continue;
+            const Program* prog = st.draw.program >= 0 ? programs_[st.draw.program].get() : nullptr;
+            if (st.draw.program >= 0 && !prog) continue;
+            std::string why = drawProblem(prog, meshes_[st.draw.mesh].get());
+            if (!why.empty() && told.insert({st.draw.program, st.draw.mesh}).second)
+                diags.warning(file, st.draw.loc, why + "; not drawn");
+        }
+    }
+}
+
+void Renderer::makeTargets(const Plan& plan, bool everything, Diagnostics& diags) {
+    const std::string& file = plan.scriptFile;
+    // Targets: one framebuffer per distinct set of textures written at once.
+    for (const auto& pass : plan.passes) {
+        if (pass.targets.empty() || (!pass.needed && !everything)) continue;
+        bool known = false;
+        for (const auto& t : targets_) known |= t->textures == pass.targets;
+        if (known) continue;
+        auto t = std::make_unique<Target>();
+        t->textures = pass.targets;
+        const TextureDecl& first = plan.textures[pass.targets.front()];
+        t->width = first.width;
+        t->height = first.height;
+        bool depth = false;
+        for (int tex : pass.targets) depth |= plan.textures[tex].needsDepth;
+        gl_->GenFramebuffers(1, &t->fbo);
+        gl_->BindFramebuffer(GL_FRAMEBUFFER, t->fbo);
+        for (size_t k = 0; k < pass.targets.size(); ++k)
+            gl_->FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + k), GL_TEXTURE_2D,
+                                     textures_[pass.targets[k]].id, 0);
+        if (depth) t->depth = attachDepth(t->width, t->height);
+        if (gl_->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+            diags.error(file, pass.loc, "the driver cannot render into these textures");
+        targets_.push_back(std::move(t));
+    }
+}
+
+void Renderer::makeScreen(const Plan& plan, Diagnostics& diags) {
+    const std::string& file = plan.scriptFile;
+    // The screen is an offscreen framebuffer of the output size, so every
+    // backend reads back the same way.
+    screen_ = std::make_unique<Target>();
+    screen_->width = plan.width;
+    screen_->height = plan.height;
+    bool screenDepth = false;
+    for (const auto& pass : plan.passes)
+        if (pass.targets.empty()) screenDepth |= pass.needsDepth;
+    gl_->GenTextures(1, &screenTexture_);
+    gl_->BindTexture(GL_TEXTURE_2D, screenTexture_);
+    textureParameters(*gl_);
+    gl_->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, plan.width, plan.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    gl_->GenFramebuffers(1, &screen_->fbo);
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, screen_->fbo);
+    gl_->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, screenTexture_, 0);
+    if (screenDepth) screen_->depth = attachDepth(plan.width, plan.height);
+    if (gl_->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+        diags.error(file, {}, fmt::format("the driver cannot make a {}x{} screen", plan.width, plan.height));
+    gl_->ClearColor(0, 0, 0, 1);
+    gl_->Clear(GL_COLOR_BUFFER_BIT);
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl_->BindTexture(GL_TEXTURE_2D, 0);
+}
+
+}  // namespace glimmer

@@ -1,0 +1,60 @@
+// Reading pictures back from the GPU: the screen and any texture, row 0 at
+// the top as every CPU-side image is.
+#include "gl/renderer_internal.h"
+
+#include <fmt/format.h>
+
+namespace glimmer {
+using namespace renderer_detail;
+
+Image Renderer::readScreen() const {
+    if (!screen_) return {};
+    Image img = Image::rgba8(screen_->width, screen_->height);
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, screen_->fbo);
+    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_->ReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    return flipRows(std::move(img));
+}
+
+Image Renderer::readTextureFloat(int texture) const {
+    if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
+    const TextureObject& t = textures_[size_t(texture)];
+    if (t.target != GL_TEXTURE_2D) return {};
+    Image img = Image::rgbaF32(t.width, t.height);
+    gl_->BindTexture(GL_TEXTURE_2D, t.id);
+    gl_->PixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl_->GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img.f32.data());
+    gl_->BindTexture(GL_TEXTURE_2D, 0);
+    img.f32 = flipRows(img.f32, img.height);
+    return img;
+}
+
+bool Renderer::isFloatTexture(int texture) const {
+    return texture >= 0 && size_t(texture) < textures_.size() && textures_[size_t(texture)].floatData;
+}
+
+std::vector<int> Renderer::renderTargets() const {
+    std::vector<int> out;
+    if (!plan_) return out;
+    for (const auto& p : plan_->passes)
+        if (p.needed)
+            for (int t : p.targets)
+                if (std::find(out.begin(), out.end(), t) == out.end()) out.push_back(t);
+    return out;
+}
+
+Image Renderer::readTexture(int texture) const {
+    if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
+    const TextureObject& t = textures_[size_t(texture)];
+    if (t.target != GL_TEXTURE_2D) return {};  // 3-D textures and cube maps are not pictures
+    Image img = Image::rgba8(t.width, t.height);
+    gl_->BindTexture(GL_TEXTURE_2D, t.id);
+    gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl_->GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
+    gl_->BindTexture(GL_TEXTURE_2D, 0);
+    return flipRows(std::move(img));
+}
+
+}  // namespace glimmer

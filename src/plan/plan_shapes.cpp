@@ -1,0 +1,169 @@
+// The shape commands: one mesh declaration per distinct shape, drawn with
+// the state in force where the command stands.
+#include "plan/builder.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <optional>
+#include <sstream>
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "plan/uniform_forms.h"
+
+namespace glimmer {
+namespace plan_detail {
+
+// Argument `i`, when given, must be a whole number of at least 3 (slices, subdivisions: 1).
+bool Builder::positive(const Command& c, size_t i) {
+    if (i >= c.args.size()) return true;
+    double v = c.args[i].number;
+    double lo = c.kind == CommandKind::Teapot || c.kind == CommandKind::WireTeapot ? 1 : 3;
+    if (v != std::floor(v) || v < lo || v > 1000) {
+        diags_.error(file(), c.args[i].loc, fmt::format("{}'s {} must be a whole number from {} to 1000", c.spelled,
+                                                        lo == 1 ? "subdivisions" : "slices", lo));
+        return false;
+    }
+    return true;
+}
+
+bool Builder::countArg(const Command& c, size_t i, double hi) {
+    if (i >= c.args.size()) return true;
+    double v = c.args[i].number;
+    if (v != std::floor(v) || v < 1 || v > hi) {
+        diags_.error(file(), c.args[i].loc, fmt::format("{}'s count must be a whole number from 1 to {}", c.spelled, hi));
+        return false;
+    }
+    return true;
+}
+
+// One point from an `[x y z]` group (a 2-number group lies at z = 0).
+std::optional<glm::dvec3> Builder::point(const Command& c, const Arg& a) {
+    if (a.kind != Arg::Kind::Array || a.items.size() < 2 || a.items.size() > 3) {
+        diags_.error(file(), a.loc, fmt::format("{} takes points written [x y z]; '{}' is not one", c.spelled,
+                                                a.isGroup() ? std::string("a group of ") + std::to_string(a.items.size()) : a.text));
+        return std::nullopt;
+    }
+    for (const auto& i : a.items)
+        if (i.kind != Arg::Kind::Number) {
+            diags_.error(file(), i.loc, fmt::format("{} takes numbers; '{}' is not a number", c.spelled, i.text));
+            return std::nullopt;
+        }
+    return glm::dvec3(a.items[0].number, a.items[1].number, a.items.size() > 2 ? a.items[2].number : 0.0);
+}
+
+// Triangles (3 points a primitive), LinesAdjacency (4).
+void Builder::pointsMesh(const Command& c, size_t per) {
+    std::vector<double> pts;
+    for (const auto& a : c.args) {
+        auto p = point(c, a);
+        if (!p) return;
+        pts.insert(pts.end(), {p->x, p->y, p->z});
+    }
+    size_t n = pts.size() / 3;
+    if (n < per) {
+        diags_.error(file(), c.loc, fmt::format("{} needs {} points [x y z], got {}", c.spelled, per, n));
+        return;
+    }
+    if (n % per)
+        diags_.warning(file(), c.args[n - n % per].loc,
+                       fmt::format("{} takes points in groups of {}; the last {} ignored", c.spelled, per,
+                                   n % per == 1 ? std::string("one is") : std::to_string(n % per) + " are"));
+    mesh(c, {}, {}, std::move(pts));
+}
+
+void Builder::glBegin(const Command& c) {
+    if (imm_) {
+        diags_.warning(file(), c.loc, fmt::format("glBegin inside the glBegin of line {}; that one ends here",
+                                                  imm_->step.draw.loc.line));
+        glEnd(nullptr);
+    }
+    Immediate b;
+    b.step = drawStep(c.loc);
+    std::optional<ImmediatePrimitive> prim;
+    if (c.args.size() == 1 && c.args[0].kind == Arg::Kind::Word) prim = parseImmediatePrimitive(c.args[0].text);
+    if (!prim) {
+        diags_.error(file(), c.args.empty() ? c.loc : c.args[0].loc,
+                     fmt::format("glBegin takes one primitive: gl_points, gl_lines, gl_line_strip, gl_line_loop, "
+                                 "gl_triangles, gl_triangle_strip, gl_triangle_fan, gl_quads, gl_quad_strip, "
+                                 "gl_polygon or gl_patches{}",
+                                 c.args.empty() ? std::string() : "; not '" + c.args[0].text + "'"));
+        b.valid = false;  // its glVertex lines are swallowed up to the glEnd
+    } else {
+        b.primitive = *prim;
+    }
+    imm_ = std::move(b);
+}
+
+void Builder::glVertex(const Command& c) {
+    if (!imm_) {
+        diags_.warning(file(), c.loc, "glVertex outside glBegin ... glEnd; ignored");
+        return;
+    }
+    if (!numbers(c, 2, 4)) return;
+    double w = num(c, 3, 1);
+    if (w == 0) {
+        diags_.error(file(), c.args[3].loc, "glVertex with w = 0 is a point at infinity; ignored");
+        return;
+    }
+    imm_->points.insert(imm_->points.end(), {num(c, 0, 0) / w, num(c, 1, 0) / w, num(c, 2, 0) / w});
+}
+
+// `end` is null when the block is closed by a new glBegin or the end of the script.
+void Builder::glEnd(const Command* end) {
+    if (!imm_) {
+        if (end) diags_.warning(file(), end->loc, "glEnd without glBegin; ignored");
+        return;
+    }
+    Immediate b = std::move(*imm_);
+    imm_.reset();
+    if (!b.valid) return;
+    if (b.points.empty()) {
+        diags_.warning(file(), b.step.draw.loc, "glBegin ... glEnd with no glVertex draws nothing");
+        return;
+    }
+    MeshDecl m;
+    m.shape = CommandKind::GlBegin;
+    m.params = {double(int(b.primitive))};
+    m.points = std::move(b.points);
+    m.loc = b.step.draw.loc;
+    b.step.draw.mesh = meshIndex(m);
+    pass().steps.push_back(b.step);
+}
+
+void Builder::obj(const Command& c) {
+    if (c.args.size() != 1 || c.args[0].kind != Arg::Kind::Word) {
+        diags_.error(file(), c.loc, fmt::format("{} takes one .obj file name", c.spelled));
+        return;
+    }
+    std::vector<std::string> tried;
+    std::string path = resolveFile(file(), c.args[0].text, options_.includeDirs, &tried);
+    if (path.empty()) {
+        notFound(c.args[0].loc, "model", c.args[0].text, tried);
+        return;
+    }
+    mesh(c, {}, path);
+}
+
+int Builder::meshIndex(const MeshDecl& m) {
+    auto [it, added] = meshIndex_.try_emplace(m, int(plan_.meshes.size()));
+    if (added) plan_.meshes.push_back(m);
+    return it->second;
+}
+
+void Builder::mesh(const Command& c, std::vector<double> params, const std::string& path, std::vector<double> points) {
+    MeshDecl m;
+    m.shape = c.kind;
+    m.params = std::move(params);
+    m.points = std::move(points);
+    m.path = path;
+    m.loc = c.loc;
+    Step s = drawStep(c.loc);
+    s.draw.mesh = meshIndex(m);
+    pass().steps.push_back(s);
+}
+
+}  // namespace plan_detail
+
+}  // namespace glimmer
