@@ -3,6 +3,7 @@
 #include <map>
 
 #include "assets/assets.h"
+#include "geometry/shape_registry.h"
 
 namespace glimmer {
 namespace {
@@ -15,62 +16,35 @@ void meshPoints(const MeshDecl& m, std::vector<glm::vec3>& out) {
 
 }  // namespace
 
-// Defaults are already filled in by the plan; counts below a shape's minimum
-// are raised to it here, as glman did.
+// The shape's row (geometry/shape_registry.h) builds it; the plan has
+// already filled in the defaults.
 bool buildMesh(const MeshDecl& m, Mesh& mesh, std::string& error) {
-    const auto& p = m.params;
-    auto i = [&](size_t k) { return int(std::lround(p[k])); };
-    switch (m.shape) {
-    case CommandKind::QuadXY: mesh = makeQuadXY(float(p[0]), float(p[1]), i(2), i(3)); return true;
-    case CommandKind::QuadXZ: mesh = makeQuadXZ(float(p[0]), float(p[1]), i(2), i(3)); return true;
-    case CommandKind::QuadYZ: mesh = makeQuadYZ(float(p[0]), float(p[1]), i(2), i(3)); return true;
-    case CommandKind::Sphere: mesh = makeSphere(float(p[0]), std::max(i(1), 3), std::max(i(2), 2)); return true;
-    case CommandKind::Torus: mesh = makeTorus(float(p[0]), float(p[1]), std::max(i(2), 3), std::max(i(3), 3)); return true;
-    case CommandKind::Box: mesh = makeBox(float(p[0]), float(p[1]), float(p[2])); return true;
-    case CommandKind::Obj: return loadObj(m.path, mesh, error);
-    case CommandKind::Cylinder: mesh = makeCylinder(float(p[0]), float(p[1]), std::max(i(2), 3)); return true;
-    case CommandKind::Cone: mesh = makeCone(float(p[0]), float(p[1]), std::max(i(2), 3)); return true;
-    case CommandKind::DiskXY: mesh = makeDiskXY(float(p[0]), std::max(i(1), 3)); return true;
-    case CommandKind::Teapot: mesh = makeTeapot(float(p[0]), std::max(i(1), 1)); return true;
-    case CommandKind::QuadBox: mesh = makeQuadBox(float(p[0])); return true;
-    case CommandKind::PointCloud: mesh = makePointCloud(i(0), float(p[1])); return true;
-    case CommandKind::JitterCloud: mesh = makeJitterCloud(i(0), float(p[1]), float(p[2])); return true;
-    case CommandKind::Triangles:
-    case CommandKind::LinesAdjacency:
-    case CommandKind::GlBegin: {
-        std::vector<glm::vec3> pts;
-        meshPoints(m, pts);
-        if (m.shape == CommandKind::Triangles) mesh = makeTrianglesFrom(pts);
-        else if (m.shape == CommandKind::LinesAdjacency) mesh = makeLinesAdjacency(pts);
-        else mesh = makeImmediate(ImmediatePrimitive(i(0)), pts);
-        return true;
+    const ShapeRule* rule = findShapeRule(commandName(m.shape));
+    if (!rule) {
+        error = "no mesh for this command";
+        return false;
     }
-    case CommandKind::ObjAdj:
-    case CommandKind::WireObj: {
+    switch (rule->source) {
+    case ShapeRule::Source::Numbers:
+        mesh = rule->wireOf.empty() ? rule->build(m.params) : makeWire(rule->build(m.params));
+        return true;
+    case ShapeRule::Source::ObjFile: {
+        if (m.shape == CommandKind::Obj) return loadObj(m.path, mesh, error);
         Mesh solid;
         if (!loadObj(m.path, solid, error)) return false;
         mesh = m.shape == CommandKind::ObjAdj ? makeObjAdjacency(solid) : makeWire(solid);
         return true;
     }
-    case CommandKind::WireBox:
-    case CommandKind::WireSphere:
-    case CommandKind::WireTorus:
-    case CommandKind::WireCylinder:
-    case CommandKind::WireCone:
-    case CommandKind::WireTeapot: {
-        static const std::map<CommandKind, CommandKind> solidOf = {
-            {CommandKind::WireBox, CommandKind::Box},           {CommandKind::WireSphere, CommandKind::Sphere},
-            {CommandKind::WireTorus, CommandKind::Torus},       {CommandKind::WireCylinder, CommandKind::Cylinder},
-            {CommandKind::WireCone, CommandKind::Cone},         {CommandKind::WireTeapot, CommandKind::Teapot}};
-        MeshDecl solidDecl = m;
-        solidDecl.shape = solidOf.at(m.shape);
-        Mesh solid;
-        if (!buildMesh(solidDecl, solid, error)) return false;
-        mesh = makeWire(solid);
+    case ShapeRule::Source::Points: {
+        std::vector<glm::vec3> pts;
+        meshPoints(m, pts);
+        if (m.shape == CommandKind::Triangles) mesh = makeTrianglesFrom(pts);
+        else if (m.shape == CommandKind::LinesAdjacency) mesh = makeLinesAdjacency(pts);
+        else mesh = makeImmediate(ImmediatePrimitive(int(std::lround(m.params.at(0)))), pts);
         return true;
     }
-    default: error = "no mesh for this command"; return false;
     }
+    return false;
 }
 
 }  // namespace glimmer

@@ -15,6 +15,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/mesh.h"
+#include "geometry/shape_registry.h"
 #include "plan/plan.h"
 
 namespace glimmer {
@@ -76,10 +77,8 @@ private:
 
     void command(const Command& c);
 
-    // Argument `i`, when given, must be a whole number of at least 3 (slices, subdivisions: 1).
-    bool positive(const Command& c, size_t i);
-
-    bool countArg(const Command& c, size_t i, double hi);
+    // A shape made from numbers (geometry/shape_registry.h): checked, completed, drawn.
+    void numberShape(const Command& c, const ShapeRule& rule);
 
     void noiseRes(const Command& c);
 

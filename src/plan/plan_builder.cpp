@@ -2,6 +2,7 @@
 // colour, current shaders, texture units) and writing passes of draws.
 #include "plan/builder.h"
 #include "geometry/planarity.h"
+#include "geometry/shape_registry.h"
 
 #include <algorithm>
 #include <cctype>
@@ -81,6 +82,11 @@ void Builder::command(const Command& c) {
         diags_.warning(file(), c.loc, fmt::format("only glVertex belongs between glBegin (line {}) and glEnd; {} "
                                                   "acts here, on what is drawn after it, not on this glBegin",
                                                   imm_->step.draw.loc.line, c.spelled));
+    // Shapes made from numbers are one row each in geometry/shape_registry.h.
+    if (const ShapeRule* rule = findShapeRule(commandName(c.kind)); rule && rule->source == ShapeRule::Source::Numbers) {
+        numberShape(c, *rule);
+        return;
+    }
     switch (c.kind) {
     case CommandKind::WindowSize: numbers(c, 2, 2); break;  // read before the walk
     case CommandKind::Ortho: ortho(c); break;
@@ -164,50 +170,6 @@ void Builder::command(const Command& c) {
     case CommandKind::TessControl: stage(c, ShaderStage::Kind::TessControl); break;
     case CommandKind::TessEvaluation: stage(c, ShaderStage::Kind::TessEvaluation); break;
     case CommandKind::Program: program(c); break;
-    case CommandKind::QuadXY:
-    case CommandKind::QuadXZ:
-    case CommandKind::QuadYZ:
-        if (numbers(c, 2, 4)) mesh(c, {num(c, 0, 0), num(c, 1, 1), num(c, 2, 1), num(c, 3, 1)});
-        break;
-    case CommandKind::Sphere:
-    case CommandKind::WireSphere:
-        if (numbers(c, 0, 3)) mesh(c, {num(c, 0, 1), num(c, 1, 60), num(c, 2, 60)});
-        break;
-    case CommandKind::Torus:
-    case CommandKind::WireTorus:
-        if (numbers(c, 0, 4)) mesh(c, {num(c, 0, 1), num(c, 1, .5), num(c, 2, 20), num(c, 3, 40)});
-        break;
-    case CommandKind::Box:
-    case CommandKind::WireBox:
-        if (numbers(c, 0, 3)) {
-            double dx = num(c, 0, 2);
-            mesh(c, {dx, num(c, 1, c.args.size() == 1 ? dx : 2), num(c, 2, c.args.size() == 1 ? dx : 2)});
-        }
-        break;
-    case CommandKind::Cylinder:
-    case CommandKind::WireCylinder:
-    case CommandKind::Cone:
-    case CommandKind::WireCone:
-        if (numbers(c, 0, 3) && positive(c, 2)) mesh(c, {num(c, 0, 1), num(c, 1, 1), num(c, 2, 40)});
-        break;
-    case CommandKind::DiskXY:
-        if (numbers(c, 0, 2) && positive(c, 1)) mesh(c, {num(c, 0, 1), num(c, 1, 40)});
-        break;
-    case CommandKind::Teapot:
-    case CommandKind::WireTeapot:
-        if (numbers(c, 0, 2) && positive(c, 1)) mesh(c, {num(c, 0, 1), num(c, 1, 10)});
-        break;
-    case CommandKind::QuadBox:
-        if (numbers(c, 0, 1)) mesh(c, {num(c, 0, 1)});
-        break;
-    case CommandKind::PointCloud:
-        // glman-like: `PointCloud [count [size]]`, count points in [-size, size]^3.
-        if (numbers(c, 0, 2) && countArg(c, 0, 1000000)) mesh(c, {num(c, 0, 1000), num(c, 1, 1)});
-        break;
-    case CommandKind::JitterCloud:
-        // `JitterCloud [n [size [jitter]]]`: an n^3 grid filling [-size, size]^3, each point jittered.
-        if (numbers(c, 0, 3) && countArg(c, 0, 100)) mesh(c, {num(c, 0, 10), num(c, 1, 1), num(c, 2, .5)});
-        break;
     case CommandKind::Obj:
     case CommandKind::ObjAdj:
     case CommandKind::WireObj: obj(c); break;
@@ -379,20 +341,19 @@ void Builder::finish() {
 }  // namespace plan_detail
 
 bool MeshDecl::flat() const {
-    switch (shape) {
-    case CommandKind::QuadXY:
-    case CommandKind::QuadXZ:
-    case CommandKind::QuadYZ:
-    case CommandKind::DiskXY: return true;
-    case CommandKind::Triangles:
-    case CommandKind::GlBegin: {
+    const ShapeRule* rule = findShapeRule(commandName(shape));
+    if (!rule) return false;
+    switch (rule->flatness) {
+    case ShapeRule::Flatness::Always: return true;
+    case ShapeRule::Flatness::Never: return false;
+    case ShapeRule::Flatness::IfPointsCoplanar: {
         std::vector<glm::dvec3> p;
         p.reserve(points.size() / 3);
         for (size_t i = 0; i + 2 < points.size(); i += 3) p.emplace_back(points[i], points[i + 1], points[i + 2]);
         return coplanar(p);
     }
-    default: return false;
     }
+    return false;
 }
 
 bool parseTextureFormat(const std::string& word, TextureDecl::Format& out) {

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -15,27 +16,22 @@
 namespace glimmer {
 namespace plan_detail {
 
-// Argument `i`, when given, must be a whole number of at least 3 (slices, subdivisions: 1).
-bool Builder::positive(const Command& c, size_t i) {
-    if (i >= c.args.size()) return true;
-    double v = c.args[i].number;
-    double lo = c.kind == CommandKind::Teapot || c.kind == CommandKind::WireTeapot ? 1 : 3;
-    if (v != std::floor(v) || v < lo || v > 1000) {
-        diags_.error(file(), c.args[i].loc, fmt::format("{}'s {} must be a whole number from {} to 1000", c.spelled,
-                                                        lo == 1 ? "subdivisions" : "slices", lo));
-        return false;
-    }
-    return true;
-}
 
-bool Builder::countArg(const Command& c, size_t i, double hi) {
-    if (i >= c.args.size()) return true;
-    double v = c.args[i].number;
-    if (v != std::floor(v) || v < 1 || v > hi) {
-        diags_.error(file(), c.args[i].loc, fmt::format("{}'s count must be a whole number from 1 to {}", c.spelled, hi));
-        return false;
+// A command of a shape made from numbers: checked and completed by its row.
+void Builder::numberShape(const Command& c, const ShapeRule& rule) {
+    if (!numbers(c, rule.minArgs, rule.maxArgs)) return;
+    const ShapeRule::Count& k = rule.count;
+    if (k.arg >= 0 && size_t(k.arg) < c.args.size()) {
+        double v = c.args[size_t(k.arg)].number;
+        if (v != std::floor(v) || v < k.lo || v > k.hi) {
+            diags_.error(file(), c.args[size_t(k.arg)].loc,
+                         fmt::format("{}'s {} must be a whole number from {} to {}", c.spelled, k.what, k.lo, k.hi));
+            return;
+        }
     }
-    return true;
+    std::vector<double> written;
+    for (const auto& a : c.args) written.push_back(a.number);
+    mesh(c, completeShapeNumbers(rule, written));
 }
 
 // One point from an `[x y z]` group (a 2-number group lies at z = 0).
