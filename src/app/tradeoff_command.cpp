@@ -15,14 +15,16 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "backends/context.h"
+#include "bloom/blur_methods.h"
+#include "driver/data_dir.h"
 #include "driver/prepare_script.h"
 #include "driver/stats.h"
-#include "bloom/blur_methods.h"
-#include "backends/context.h"
 #include "gl/renderer.h"
 #include "image/test_images.h"
 #include "reference/metrics.h"
 #include "reference/pareto_chart.h"
+#include "util/temp_dir.h"
 
 namespace fs = std::filesystem;
 
@@ -78,8 +80,8 @@ int runTradeoff(const TradeoffOptions& o) {
         return kExitUsage;
     }
     // The input, as the GPU will see it.
-    fs::path dir = fs::temp_directory_path() / fmt::format("glimmer-tradeoff-{}", ::getpid());
-    fs::create_directories(dir);
+    TempDir temp("glimmer-tradeoff");  // the input picture and each method's script; removed on every return
+    const fs::path& dir = temp.path();
     Image input;
     std::string why;
     std::string imagePath;
@@ -135,7 +137,6 @@ int runTradeoff(const TradeoffOptions& o) {
             return kExitScriptError;
         }
     }
-    for (const auto& [name, text] : blurShaders()) std::ofstream(dir / name) << text;
     const RgbImage in = rgbOf(input);
 
     std::vector<BlurMethod> methods;
@@ -155,6 +156,7 @@ int runTradeoff(const TradeoffOptions& o) {
         ScriptRequest request;
         request.script = script.string();
         request.plan.keepTargets = {m.outputUnit};
+        request.plan.includeDirs = blurKernelDirs(dataDir());
         request.plan.width = input.width;
         request.plan.height = input.height;
         if (!prepareScript(request, *renderer, diags, loaded)) {
@@ -187,7 +189,6 @@ int runTradeoff(const TradeoffOptions& o) {
         rows.push_back(row);
     }
     std::cerr << "\n";
-    fs::remove_all(dir);
 
     // The table.
     std::string title = fmt::format("{} on {}, {}x{} {}, median of {}", context->name(), renderer->rendererName(),

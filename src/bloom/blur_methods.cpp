@@ -7,85 +7,14 @@
 namespace glimmer {
 namespace {
 
-// Every pass draws one quad over its whole target; the fragment's vST is
+// Every method is a GLIB script over the kernel files of scripts/bloom (the
+// same files the bloom lab's scripts use; see blurKernelDirs). Every pass
+// draws one quad over its whole target with quad.vert; the fragment's vST is
 // the target texel's centre, and offsets are in SOURCE texels (the
 // conventions of src/reference/blur_reference.h).
-const char* kVert = R"(#version 330 compatibility
-out vec2 vST;
-void main() {
-    vST = gl_MultiTexCoord0.st;
-    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
-}
-)";
-
-// LearnOpenGL's 9-tap Gaussian, one direction, whole-texel offsets.
-const char* kSep9 = R"(#version 330 compatibility
-uniform sampler2D Src;
-uniform vec2 uDir;
-in vec2 vST;
-const float w[5] = float[](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
-void main() {
-    vec2 d = uDir / vec2(textureSize(Src, 0));
-    vec3 c = texture(Src, vST).rgb * w[0];
-    for (int i = 1; i < 5; ++i)
-        c += (texture(Src, vST + float(i) * d).rgb + texture(Src, vST - float(i) * d).rgb) * w[i];
-    gl_FragColor = vec4(c, 1.0);
-}
-)";
-
-// The same kernel with bilinear tap merging: 5 fetches instead of 9.
-const char* kLinear5 = R"(#version 330 compatibility
-uniform sampler2D Src;
-uniform vec2 uDir;
-in vec2 vST;
-const float o[3] = float[](0.0, 1.3846153846, 3.2307692308);
-const float w[3] = float[](0.227027, 0.3162162, 0.07027);
-void main() {
-    vec2 d = uDir / vec2(textureSize(Src, 0));
-    vec3 c = texture(Src, vST).rgb * w[0];
-    for (int i = 1; i < 3; ++i)
-        c += (texture(Src, vST + o[i] * d).rgb + texture(Src, vST - o[i] * d).rgb) * w[i];
-    gl_FragColor = vec4(c, 1.0);
-}
-)";
-
-// Bjorge 2015, dual filter: halfpixel = 0.5 * offset source texels.
-const char* kKawaseDown = R"(#version 330 compatibility
-uniform sampler2D Src;
-uniform float uOffset;
-in vec2 vST;
-void main() {
-    vec2 h = 0.5 * uOffset / vec2(textureSize(Src, 0));
-    vec3 c = texture(Src, vST).rgb * 4.0;
-    c += texture(Src, vST - h).rgb;
-    c += texture(Src, vST + h).rgb;
-    c += texture(Src, vST + vec2(h.x, -h.y)).rgb;
-    c += texture(Src, vST - vec2(h.x, -h.y)).rgb;
-    gl_FragColor = vec4(c / 8.0, 1.0);
-}
-)";
-
-const char* kKawaseUp = R"(#version 330 compatibility
-uniform sampler2D Src;
-uniform float uOffset;
-in vec2 vST;
-void main() {
-    vec2 h = 0.5 * uOffset / vec2(textureSize(Src, 0));
-    vec3 c = texture(Src, vST + vec2(-h.x * 2.0, 0.0)).rgb;
-    c += texture(Src, vST + vec2(-h.x, h.y)).rgb * 2.0;
-    c += texture(Src, vST + vec2(0.0, h.y * 2.0)).rgb;
-    c += texture(Src, vST + vec2(h.x, h.y)).rgb * 2.0;
-    c += texture(Src, vST + vec2(h.x * 2.0, 0.0)).rgb;
-    c += texture(Src, vST + vec2(h.x, -h.y)).rgb * 2.0;
-    c += texture(Src, vST + vec2(0.0, -h.y * 2.0)).rgb;
-    c += texture(Src, vST + vec2(-h.x, -h.y)).rgb * 2.0;
-    gl_FragColor = vec4(c / 12.0, 1.0);
-}
-)";
-
 std::string header(const std::string& image, const std::string& format, int w, int h) {
     return fmt::format("##OpenGL GLIB\nOrtho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nTexture2D 5 {}\n"
-                       "Texture2D 10 {} {} {}\nTexture2D 11 {} {} {}\nVertex blur.vert\n",
+                       "Texture2D 10 {} {} {}\nTexture2D 11 {} {} {}\nVertex quad.vert\n",
                        image, w, h, format, w, h, format);
 }
 
@@ -95,8 +24,8 @@ std::string separable(const std::string& frag, const std::string& image, int w, 
     std::string s = header(image, format, w, h) + "Fragment " + frag + "\n";
     int src = 5;
     for (int p = 0; p < pairs; ++p) {
-        s += fmt::format("RenderToTexture 11\nProgram H{} Src {} uDir [1 0]\nQuadXY 0 1\n", p, src);
-        s += fmt::format("RenderToTexture 10\nProgram V{} Src 11 uDir [0 1]\nQuadXY 0 1\n", p);
+        s += fmt::format("RenderToTexture 11\nProgram H{} ImageUnit {} uHorizontal 1\nQuadXY 0 1\n", p, src);
+        s += fmt::format("RenderToTexture 10\nProgram V{} ImageUnit 11 uHorizontal 0\nQuadXY 0 1\n", p);
         src = 10;
     }
     return s + "RenderToTexture\n";
@@ -115,13 +44,13 @@ std::string kawase(const std::string& image, int w, int h, const std::string& fo
     s += "Fragment kawase_down.frag\n";
     int src = 5;
     for (int k = 1; k <= iterations; ++k) {
-        s += fmt::format("RenderToTexture {}\nProgram D{} Src {} uOffset 1\nQuadXY 0 1\n", 11 + k, k, src);
+        s += fmt::format("RenderToTexture {}\nProgram D{} ImageUnit {} uOffset 1\nQuadXY 0 1\n", 11 + k, k, src);
         src = 11 + k;
     }
     s += "Fragment kawase_up.frag\n";
     for (int k = iterations - 1; k >= 0; --k) {
         int dst = k == 0 ? 10 : 20 + k;
-        s += fmt::format("RenderToTexture {}\nProgram U{} Src {} uOffset 1\nQuadXY 0 1\n", dst, k, src);
+        s += fmt::format("RenderToTexture {}\nProgram U{} ImageUnit {} uOffset 1\nQuadXY 0 1\n", dst, k, src);
         src = dst;
     }
     return s + "RenderToTexture\n";
@@ -134,48 +63,11 @@ std::string superblur(const std::string& image, int w, int h, const std::string&
                        half);
 }
 
-// The seed's superblur.frag, as on the slides.
-const char* kSuperblur = R"(#version 330 compatibility
-uniform sampler2D ImageUnit;
-uniform int uHalfSize;
-in vec2 vST;
-
-void main( )
-{
-    ivec2 ires = textureSize( ImageUnit, 0 );
-    float ds = 1. / float( ires.s );
-    float dt = 1. / float( ires.t );
-
-    int halfSize = uHalfSize | 01;          // be sure it's an odd number
-    vec3 rgbSum = vec3( 0., 0., 0. );
-    float maxDistance = length( vec2( float(halfSize), float(halfSize) ) );
-    maxDistance += 1.;      // don't want a zero weight
-    float weightSum = 0.;
-
-    for( int i = -halfSize; i <= halfSize; i++ )
-    {
-        float di = float(i);
-        for( int j = -halfSize; j <= halfSize; j++ )
-        {
-            float dj = float(j);
-            vec2 st = vST + vec2( di*ds, dj*dt );
-            float weight = maxDistance - length( vec2(di,dj) );
-            rgbSum += weight*texture(ImageUnit,st).rgb;
-            weightSum += weight;
-        }
-    }
-    rgbSum /= weightSum;
-    gl_FragColor = vec4( rgbSum, 1. );
-}
-)";
-
 }  // namespace
 
-const std::map<std::string, std::string>& blurShaders() {
-    static const std::map<std::string, std::string> shaders = {
-        {"blur.vert", kVert},          {"sep9.frag", kSep9},           {"linear5.frag", kLinear5},
-        {"kawase_down.frag", kKawaseDown}, {"kawase_up.frag", kKawaseUp}, {"superblur.frag", kSuperblur}};
-    return shaders;
+std::vector<std::string> blurKernelDirs(const std::string& dataDir) {
+    // superblur.frag is the seed's own file (shaders/); the others are scripts/bloom's.
+    return {dataDir + "/scripts/bloom", dataDir + "/shaders"};
 }
 
 std::vector<BlurMethod> blurMethods() {
@@ -201,7 +93,7 @@ std::vector<BlurMethod> blurMethods() {
         const char* frag;
         int tapsPerPass;
     };
-    for (const Separable& k : {Separable{"sep9", "separable 9-tap (LearnOpenGL)", "sep9.frag", 9},
+    for (const Separable& k : {Separable{"sep9", "separable 9-tap (LearnOpenGL)", "gauss9.frag", 9},
                                Separable{"linear5", "linear-sampled 9-tap", "linear5.frag", 5}}) {
         for (int pairs : {1, 2, 4}) {
             BlurMethod m;

@@ -1,6 +1,9 @@
-// The blur methods `glimmer tradeoff` compares. Each is a GLIB script that
-// Glimmer runs like any other (one renderer serves every front end), plus
-// the double-precision CPU reference of the same kernel from src/reference.
+// The blur methods `glimmer tradeoff` compares, one row each: a name, its
+// family, its cost (taps, passes, texels written), a GLIB script over the
+// kernel files of scripts/bloom that Glimmer runs like any other (one
+// renderer serves every front end), and the double-precision CPU reference of
+// the same kernel from src/reference. A new method is a kernel file there
+// plus a row in blurMethods().
 #pragma once
 #include <functional>
 #include <map>
@@ -23,9 +26,9 @@ struct BlurMethod {
     std::function<RgbImage(const RgbImage&)> reference;
 };
 
-// Shader files the scripts name, by file name: tradeoff writes them beside
-// the scripts it generates.
-const std::map<std::string, std::string>& blurShaders();
+// The folders the methods' scripts find their kernel files in (as -I
+// folders), given Glimmer's data folder (driver/data_dir.h).
+std::vector<std::string> blurKernelDirs(const std::string& dataDir);
 
 // The methods, by family, each at a few strengths.
 std::vector<BlurMethod> blurMethods();

@@ -45,9 +45,9 @@ Rendered runMethod(const BlurMethod& m, const Image& input, const std::string& f
     fs::create_directories(dir);
     std::string err;
     EXPECT_TRUE(writeBmp((dir / "in.bmp").string(), input, err)) << err;
-    for (const auto& [name, text] : blurShaders()) std::ofstream(dir / name) << text;
     std::ofstream(dir / "m.glib") << m.script((dir / "in.bmp").string(), input.width, input.height, format);
     PlanOptions o;
+    o.includeDirs = blurKernelDirs(GLIMMER_SOURCE_DIR);
     o.width = input.width;
     o.height = input.height;
     return renderScript(testBackends().front(), (dir / "m.glib").string(), {}, {5, m.outputUnit}, o);
