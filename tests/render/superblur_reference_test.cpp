@@ -28,7 +28,17 @@ constexpr int kW = 80, kH = 48;
 fs::path calibrationScript() {
     // One folder per process: CTest runs the cases of this file in parallel
     // processes, and one must never read another's half-written files.
-    fs::path dir = fs::temp_directory_path() / ("glimmer_calibration_" + std::to_string(::getpid()));
+    // Removed when the process ends (a static's destructor), so no
+    // glimmer_calibration_<pid> folder is left in the temp folder.
+    struct Folder {
+        fs::path path = fs::temp_directory_path() / ("glimmer_calibration_" + std::to_string(::getpid()));
+        ~Folder() {
+            std::error_code ec;
+            fs::remove_all(path, ec);
+        }
+    };
+    static Folder folder;
+    const fs::path& dir = folder.path;
     fs::create_directories(dir);
     std::string err;
     EXPECT_TRUE(writeBmp((dir / "input.bmp").string(), makeNoiseImage(kW, kH, 7), err)) << err;
