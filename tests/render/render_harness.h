@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
+
 #include "driver/prepare_script.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
@@ -27,13 +29,26 @@ struct Rendered {
 
 // The backends the render tests run on: GLIMMER_TEST_BACKENDS (comma list),
 // else both CPU backends. A GPU machine sets it to "egl-device".
+// The list is read when a test runs, never when tests are listed, so the
+// same cases exist whatever it says. A name Glimmer does not know, or a list
+// naming nothing, fails the calling test (naming it); a known backend that
+// cannot make a context fails in renderScript, naming it too. Never a skip.
 inline std::vector<std::string> testBackends() {
     const char* env = std::getenv("GLIMMER_TEST_BACKENDS");
     std::string list = env && *env ? env : "osmesa,egl-surfaceless";
     std::vector<std::string> out;
     std::stringstream ss(list);
-    for (std::string b; std::getline(ss, b, ',');)
-        if (!b.empty()) out.push_back(b);
+    for (std::string b; std::getline(ss, b, ',');) {
+        if (b.empty()) continue;
+        BackendChoice choice;
+        if (!parseBackend(b, choice))
+            ADD_FAILURE() << "GLIMMER_TEST_BACKENDS names an unknown backend '" << b << "'";
+        out.push_back(b);
+    }
+    if (out.empty()) {
+        ADD_FAILURE() << "GLIMMER_TEST_BACKENDS='" << list << "' names no backend";
+        out.push_back("(none)");  // renderScript then fails naming it
+    }
     return out;
 }
 
@@ -57,12 +72,12 @@ inline Rendered renderScript(const std::string& backendName, const std::string& 
         if (!values.applySet(loaded.plan, s, diags)) return fail("--set " + s);
 
     BackendChoice choice;
-    if (!parseBackend(backendName, choice)) return fail("unknown backend " + backendName);
+    if (!parseBackend(backendName, choice)) return fail("unknown backend '" + backendName + "'");
     std::string why;
     auto context = createContext(choice, why);
-    if (!context) return fail(why);
+    if (!context) return fail("backend '" + backendName + "' is unusable: " + why);
     auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
-    if (!renderer) return fail(why);
+    if (!renderer) return fail("backend '" + backendName + "' is unusable: " + why);
     if (!loadAndUpload(*renderer, loaded, false, diags)) return fail("prepare failed");
     renderer->render(values, 0.0);
     r.screen = renderer->readScreen();

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/calibration_scene.h"
 #include "viewer_process.h"
 
 namespace fs = std::filesystem;
@@ -107,6 +108,36 @@ TEST(Viewer, ReportsANanInATarget) {
     EXPECT_TRUE(v.waitForLog("health: unit 6 (RGBA16F 16x16): 12 NaN")) << v.log();
     EXPECT_EQ(v.quit(), 0) << v.log();
     fs::remove(fs::temp_directory_path() / ("glimmer_nan_view_" + std::to_string(::getpid()) + ".png"));
+}
+
+// What the viewer saves against the double-precision CPU reference, not
+// against `glimmer render` (a bug both share would pass that): the
+// calibration scene at uHalfSize 3, uAdd 2 within 1 + uAdd steps.
+TEST(Viewer, SavedPictureMatchesTheCpuReference) {
+    namespace cal = glimmer::calibration;
+    fs::path dir = fs::temp_directory_path() / ("glimmer_viewer_ref_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    struct Cleanup {
+        fs::path p;
+        ~Cleanup() { fs::remove_all(p); }
+    } cleanup{dir};
+    std::string why;
+    fs::path script = cal::writeScene(dir, why);
+    ASSERT_FALSE(script.empty()) << why;
+    for (auto f : {"superblur.vert", "superblur.frag", "bloom.vert", "bloom.frag"})
+        fs::copy_file(fs::path(cal::shaderDir()) / f, dir / f);
+    {
+        ViewerProcess v({"calibration.glib", "--no-stdin", "--exec", "set uHalfSize 3; set uAdd 2; save view.png; quit"},
+                        dir);
+        ASSERT_TRUE(waitForFile(dir / "view.png")) << v.log();
+        EXPECT_EQ(v.quit(), 0) << v.log();
+    }
+    glimmer::Image saved;
+    ASSERT_TRUE(glimmer::loadImage((dir / "view.png").string(), saved, why)) << why;
+    ASSERT_EQ(saved.width, cal::kW);
+    ASSERT_EQ(saved.height, cal::kH);
+    std::string where;
+    EXPECT_LE(cal::maxStepsIn(saved, 0, 0, cal::expectedScreen(cal::input(dir), 3, 2.0), &where), 3) << where;
 }
 
 }  // namespace
