@@ -66,8 +66,12 @@ private:
 
     // Checks that a command has between lo and hi arguments, all numbers.
     bool numbers(const Command& c, size_t lo, size_t hi);
+    // The same with the count from the command's row (lang/commands.cpp).
+    bool numbers(const Command& c);
 
     double num(const Command& c, size_t i, double fallback) const;
+    // Argument i, else the default in the command's row.
+    double num(const Command& c, size_t i) const;
 
     Pass& pass() { return plan_.passes.back(); }
     // The aspect ratio the projection keeps. Only the screen is widened, as

@@ -21,7 +21,7 @@ Plan Builder::build() {
     // then the first WindowSize, then glman's 600x600.
     for (const auto& c : script_.commands) {
         if (c.kind == CommandKind::WindowSize) {
-            if (numbers(c, 2, 2)) {
+            if (numbers(c)) {
                 plan_.width = int(c.args[0].number);
                 plan_.height = int(c.args[1].number);
                 if (plan_.width < 1 || plan_.height < 1 || plan_.width > 16384 || plan_.height > 16384) {
@@ -69,6 +69,15 @@ double Builder::num(const Command& c, size_t i, double fallback) const {
     return i < c.args.size() ? c.args[i].number : fallback;
 }
 
+bool Builder::numbers(const Command& c) {
+    const CommandRule* rule = commandRule(c.kind);
+    return numbers(c, size_t(rule->minNumbers), size_t(rule->maxNumbers));
+}
+
+double Builder::num(const Command& c, size_t i) const {
+    return num(c, i, commandRule(c.kind)->defaults.at(i));
+}
+
 // The aspect ratio the projection keeps. Only the screen is widened, as
 // glman's window reshape does; a quad drawn to cover a texture target
 // must cover it exactly, whatever the texture's shape.
@@ -88,12 +97,12 @@ void Builder::command(const Command& c) {
         return;
     }
     switch (c.kind) {
-    case CommandKind::WindowSize: numbers(c, 2, 2); break;  // read before the walk
+    case CommandKind::WindowSize: numbers(c); break;  // read before the walk
     case CommandKind::Ortho: ortho(c); break;
     case CommandKind::Perspective:
-        if (numbers(c, 0, 1)) {
+        if (numbers(c)) {
             projection_.kind = Projection::Kind::Perspective;
-            projection_.fov = num(c, 0, kDefaultFov);
+            projection_.fov = num(c, 0);
             if (!(projection_.fov > 0 && projection_.fov < 180)) {
                 diags_.error(file(), c.loc, "Perspective's field of view must be between 0 and 180 degrees");
                 projection_.fov = kDefaultFov;
@@ -102,15 +111,15 @@ void Builder::command(const Command& c) {
         break;
     case CommandKind::LookAt: lookAt(c); break;
     case CommandKind::Translate:
-        if (numbers(c, 2, 3)) model_ = glm::translate(model_, glm::vec3(num(c, 0, 0), num(c, 1, 0), num(c, 2, 0)));
+        if (numbers(c)) model_ = glm::translate(model_, glm::vec3(num(c, 0), num(c, 1), num(c, 2)));
         break;
     case CommandKind::Rotate:
-        if (numbers(c, 4, 4)) {
-            glm::vec3 axis(num(c, 1, 0), num(c, 2, 0), num(c, 3, 0));
+        if (numbers(c)) {
+            glm::vec3 axis(num(c, 1), num(c, 2), num(c, 3));
             if (glm::length(axis) == 0.f)
                 diags_.warning(file(), c.loc, "Rotate about a zero axis does nothing");
             else
-                model_ = glm::rotate(model_, glm::radians(float(num(c, 0, 0))), axis);
+                model_ = glm::rotate(model_, glm::radians(float(num(c, 0))), axis);
         }
         break;
     case CommandKind::Scale:
@@ -142,16 +151,16 @@ void Builder::command(const Command& c) {
         break;
     }
     case CommandKind::LineWidth:
-        if (numbers(c, 1, 1)) lineWidth_ = float(num(c, 0, 1));
+        if (numbers(c)) lineWidth_ = float(num(c, 0));
         break;
     case CommandKind::PointSize:
-        if (numbers(c, 1, 1)) pointSize_ = float(num(c, 0, 1));
+        if (numbers(c)) pointSize_ = float(num(c, 0));
         break;
     case CommandKind::Flat: flat_ = true; break;
     case CommandKind::Smooth: flat_ = false; break;
     case CommandKind::Timer:
-        if (numbers(c, 0, 1)) {
-            double t = num(c, 0, 10);
+        if (numbers(c)) {
+            double t = num(c, 0);
             if (t > 0) plan_.timerPeriod = t;
             else diags_.error(file(), c.loc, "Timer's period must be more than 0 seconds");
         }
@@ -179,7 +188,7 @@ void Builder::command(const Command& c) {
     case CommandKind::GlVertex: glVertex(c); break;
     case CommandKind::GlEnd: glEnd(&c); break;
     case CommandKind::NumPatchVertices:
-        if (numbers(c, 1, 1)) {
+        if (numbers(c)) {
             double n = c.args[0].number;
             if (n != std::floor(n) || n < 1 || n > 32)
                 diags_.error(file(), c.args[0].loc, "NumPatchVertices takes a whole number from 1 to 32");
@@ -219,7 +228,7 @@ void Builder::ortho(const Command& c) {
         projection_ = Projection{};
         return;
     }
-    if (!numbers(c, 4, 4)) return;
+    if (!numbers(c)) return;
     double l = c.args[0].number, r = c.args[1].number, b = c.args[2].number, t = c.args[3].number;
     if (l == r || b == t) {
         // glOrtho rejects this with GL_INVALID_VALUE and leaves the
@@ -239,10 +248,10 @@ void Builder::ortho(const Command& c) {
 }
 
 void Builder::lookAt(const Command& c) {
-    if (!numbers(c, 9, 9)) return;
-    glm::vec3 eye(num(c, 0, 0), num(c, 1, 0), num(c, 2, 0));
-    glm::vec3 at(num(c, 3, 0), num(c, 4, 0), num(c, 5, 0));
-    glm::vec3 up(num(c, 6, 0), num(c, 7, 1), num(c, 8, 0));
+    if (!numbers(c)) return;
+    glm::vec3 eye(num(c, 0), num(c, 1), num(c, 2));
+    glm::vec3 at(num(c, 3), num(c, 4), num(c, 5));
+    glm::vec3 up(num(c, 6), num(c, 7), num(c, 8));
     glm::vec3 dir = at - eye;
     if (glm::length(dir) == 0.f || glm::length(glm::cross(dir, up)) == 0.f) {
         diags_.error(file(), c.loc, "LookAt needs an eye apart from the point looked at, and an up vector "

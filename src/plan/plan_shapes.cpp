@@ -97,13 +97,13 @@ void Builder::glVertex(const Command& c) {
         diags_.warning(file(), c.loc, "glVertex outside glBegin ... glEnd; ignored");
         return;
     }
-    if (!numbers(c, 2, 4)) return;
-    double w = num(c, 3, 1);
+    if (!numbers(c)) return;
+    double w = num(c, 3);
     if (w == 0) {
         diags_.error(file(), c.args[3].loc, "glVertex with w = 0 is a point at infinity; ignored");
         return;
     }
-    imm_->points.insert(imm_->points.end(), {num(c, 0, 0) / w, num(c, 1, 0) / w, num(c, 2, 0) / w});
+    imm_->points.insert(imm_->points.end(), {num(c, 0) / w, num(c, 1) / w, num(c, 2) / w});
 }
 
 // `end` is null when the block is closed by a new glBegin or the end of the script.

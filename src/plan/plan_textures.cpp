@@ -17,8 +17,8 @@ namespace plan_detail {
 
 void Builder::noiseRes(const Command& c) {
     bool two = c.kind == CommandKind::Noise2D;
-    if (!numbers(c, 0, 1)) return;
-    double res = num(c, 0, 64);
+    if (!numbers(c)) return;
+    double res = num(c, 0);
     double hi = two ? 4096 : 512;
     if (res != std::floor(res) || res < 1 || res > hi) {
         diags_.error(file(), c.loc, fmt::format("{}'s resolution must be a whole number from 1 to {}", c.spelled, hi));

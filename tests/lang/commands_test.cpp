@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+#include <string>
+
 namespace glimmer {
 namespace {
 
@@ -71,6 +75,29 @@ TEST(Commands, UnknownWords) {
     EXPECT_EQ(lookupCommand("Ortho "), std::nullopt);
     EXPECT_EQ(lookupCommand("uHalfSize"), std::nullopt);
     EXPECT_EQ(lookupCommand("Unknown"), std::nullopt);
+}
+
+// The command table: one row per command, found by its spelling, and every
+// command documented in docs/glib.md under the spelling of its row.
+TEST(CommandTable, EveryRowIsFoundByItsSpellingAndDocumented) {
+    std::ifstream doc(std::string(GLIMMER_SOURCE_DIR) + "/docs/glib.md");
+    std::string text((std::istreambuf_iterator<char>(doc)), std::istreambuf_iterator<char>());
+    ASSERT_FALSE(text.empty());
+    int rows = 0;
+    for (const CommandRule* r = commandRulesBegin(); r != commandRulesEnd(); ++r, ++rows) {
+        EXPECT_EQ(lookupCommand(r->name), r->kind) << r->name;
+        EXPECT_EQ(commandRule(r->kind), r) << r->name << " has two rows";
+        EXPECT_NE(text.find(std::string(r->name)), std::string::npos) << r->name << " is not in docs/glib.md";
+        if (r->minNumbers >= 0) EXPECT_LE(r->minNumbers, r->maxNumbers) << r->name;
+    }
+    EXPECT_EQ(rows, int(CommandKind::QuadBox));  // every kind but Unknown
+}
+
+TEST(CommandTable, DefaultsAreGlmans) {
+    EXPECT_EQ(commandRule(CommandKind::Perspective)->defaults[0], 50);
+    EXPECT_EQ(commandRule(CommandKind::Timer)->defaults[0], 10);
+    EXPECT_EQ(commandRule(CommandKind::LookAt)->defaults[7], 1);  // up = +y
+    EXPECT_EQ(commandRule(CommandKind::GlVertex)->defaults[3], 1);  // w
 }
 
 }  // namespace
