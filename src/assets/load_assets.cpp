@@ -4,6 +4,7 @@
 
 #include <fmt/format.h>
 
+#include "assets/gs_compat.h"
 #include "image/cubemap.h"
 
 namespace glimmer {
@@ -62,6 +63,7 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
             out.shaderTexts[i].push_back(std::move(text));
         }
     }
+    adaptGeometryShaders(plan, out, diags);  // NVIDIA-era geometry shaders -> standard GLSL
     return diags.errorCount() == errorsBefore;
 }
 
