@@ -14,6 +14,8 @@ void addCommon(CLI::App* sub, CommonOptions& o) {
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
     sub->add_option("--set", o.sets, "NAME=VALUE for a uniform range or checkbox (repeatable)");
     sub->add_option("--size", o.size, "output size WxH (default: WindowSize, else 600x600)");
+    sub->add_flag("--stand-ins", o.standIns, "a missing image, cube-map face, 3-D .tex or OBJ is a warning and a "
+                                            "stand-in takes its place (a missing shader stays an error)");
 }
 
 }  // namespace
@@ -45,6 +47,8 @@ void addViewCommand(CLI::App& app, ViewOptions& o) {
     sub->add_option("--exec", o.exec, "commands to run, separated by ';': set NAME VALUE, reload, save FILE.png, "
                                       "show UNIT|screen, quit");
     sub->add_flag("!--no-stdin", o.readStdin, "do not read commands from standard input");
+    sub->add_flag("--stand-ins,!--no-stand-ins", o.standIns, "replace missing images and models by stand-ins, with a "
+                                                            "warning (the default in view); --no-stand-ins: an error");
 }
 
 }  // namespace glimmer

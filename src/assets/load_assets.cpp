@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include "assets/gs_compat.h"
+#include "assets/stand_ins.h"
 #include "image/cubemap.h"
 
 namespace glimmer {
@@ -11,6 +13,7 @@ namespace {
 
 bool loadTexture(const TextureDecl& t, TextureFile& out, std::string& why) {
     if (t.source != TextureDecl::Source::File) return true;  // a target, or an empty 3-D texture
+    if (needsStandIn(t)) return standInTexture(t, out, why);   // --stand-ins: the plan warned
     if (t.kind == TextureDecl::Kind::Cube) {
         std::array<std::string, 6> paths;
         for (size_t k = 0; k < 6; ++k) paths[k] = t.facePaths.at(k);
@@ -50,7 +53,8 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
         if (!out.used.meshes[i]) continue;
         Mesh mesh;
         std::string why;
-        if (buildMesh(plan.meshes[i], mesh, why)) out.meshes[i] = std::move(mesh);
+        if (needsStandIn(plan.meshes[i])) out.meshes[i] = standInMesh(plan.meshes[i]);  // --stand-ins
+        else if (buildMesh(plan.meshes[i], mesh, why)) out.meshes[i] = std::move(mesh);
         else diags.error(file, plan.meshes[i].loc, why);
     }
     for (size_t i = 0; i < plan.programs.size(); ++i) {
@@ -62,6 +66,7 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
             out.shaderTexts[i].push_back(std::move(text));
         }
     }
+    adaptGeometryShaders(plan, out, diags);  // NVIDIA-era geometry shaders -> standard GLSL
     return diags.errorCount() == errorsBefore;
 }
 

@@ -17,6 +17,7 @@ struct CommonOptions {
     std::vector<std::string> includeDirs;
     std::vector<std::string> sets;  // name=value
     std::string size;               // WxH
+    bool standIns = false;          // --stand-ins: missing images and models are replaced (assets/stand_ins.h)
 };
 
 struct RenderOptions : CommonOptions {

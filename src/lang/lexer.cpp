@@ -1,5 +1,7 @@
 #include "lang/lexer.h"
 
+#include "lang/decimal_comma.h"
+
 #include <charconv>
 #include <cmath>
 #include <system_error>
@@ -105,6 +107,7 @@ std::vector<LogicalLine> lexScript(std::string_view text) {
     std::vector<LogicalLine> lines;
     LogicalLine current;
     auto flush = [&] {
+        readDecimalCommas(current);  // `< 0,01 0.1 1.0 >`
         if (!current.tokens.empty()) lines.push_back(std::move(current));
         current = LogicalLine{};
     };

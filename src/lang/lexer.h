@@ -18,6 +18,7 @@ struct Token {
         None,
         Malformed,   // only a prefix of `text` is a number, e.g. "4.8." or "1.."
         OutOfRange,  // e.g. "1e999"
+        DecimalComma,  // "0,01" in a group, read as 0.01 (lang/decimal_comma.h)
     };
     Kind kind = Kind::Word;
     std::string text;  // as written; for Open/Close the bracket itself

@@ -174,6 +174,11 @@ private:
                 diags_.warning(file_, t.loc,
                                "malformed number " + quoted(t.text) + " read as " + formatNumber(t.number));
                 break;
+            case Token::NumberIssue::DecimalComma:
+                diags_.warning(file_, t.loc,
+                               "decimal comma in " + quoted(t.text) + " read as " + formatNumber(t.number) +
+                                   "; GLIB separates values with commas, so write decimals with a point");
+                break;
             case Token::NumberIssue::OutOfRange:
                 diags_.error(file_, t.loc, "number " + quoted(t.text) + " is out of range; " + dropped);
                 return std::nullopt;

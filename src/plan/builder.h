@@ -135,7 +135,7 @@ private:
 
     void cubeMap(const Command& c);
 
-    void notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried);
+    bool notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried);
 
     void renderToTexture(const Command& c);
 

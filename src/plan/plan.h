@@ -138,6 +138,9 @@ struct PlanOptions {
     int width = 0, height = 0;             // 0: from the script
     std::vector<std::string> includeDirs;  // -I
     std::set<int> keepTargets;             // texture units the user wants to see (--dump): never dropped
+    // --stand-ins: a missing image, cube-map face, 3-D .tex or OBJ is a warning
+    // and its path stays empty; the load step makes a stand-in (assets/stand_ins.h).
+    bool standIns = false;
 };
 
 // Resolves and checks a parsed script. Problems go to `diags`; the plan is

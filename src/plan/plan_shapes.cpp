@@ -135,10 +135,7 @@ void Builder::obj(const Command& c) {
     }
     std::vector<std::string> tried;
     std::string path = resolveFile(file(), c.args[0].text, options_.includeDirs, &tried);
-    if (path.empty()) {
-        notFound(c.args[0].loc, "model", c.args[0].text, tried);
-        return;
-    }
+    if (path.empty() && !notFound(c.args[0].loc, "model", c.args[0].text, tried)) return;
     mesh(c, {}, path);
 }
 

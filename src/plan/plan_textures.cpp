@@ -39,8 +39,7 @@ int Builder::unitArg(const Command& c, const Arg& a) {
 bool Builder::textureFile(const Arg& a, std::string& path) {
     std::vector<std::string> tried;
     path = resolveFile(file(), a.text, options_.includeDirs, &tried);
-    if (path.empty()) notFound(a.loc, "texture", a.text, tried);
-    return !path.empty();
+    return !path.empty() || notFound(a.loc, "texture", a.text, tried);
 }
 
 // Binds `t` to `unit` where the command stands. Scripts re-bind the same
@@ -51,7 +50,7 @@ void Builder::bindTexture(int unit, TextureDecl t) {
         for (size_t i = 0; i < plan_.textures.size(); ++i) {
             const TextureDecl& o = plan_.textures[i];
             if (o.source == TextureDecl::Source::File && o.kind == t.kind && o.path == t.path &&
-                o.facePaths == t.facePaths) {
+                o.facePaths == t.facePaths && (!options_.standIns || o.faceShown == t.faceShown)) {
                 units_[unit] = int(i);
                 return;
             }
@@ -198,10 +197,16 @@ void Builder::cubeMap(const Command& c) {
     bindTexture(unit, std::move(t));
 }
 
-void Builder::notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried) {
+// An error; with --stand-ins (not for a shader) a warning, and true: the
+// path stays empty and the load step makes a stand-in (assets/stand_ins.h).
+bool Builder::notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried) {
     std::string where;
     for (const auto& d : tried) where += (where.empty() ? "" : ", ") + d;
-    diags_.error(file(), loc, fmt::format("cannot find {} '{}' (looked in {})", what, name, where));
+    std::string message = fmt::format("cannot find {} '{}' (looked in {})", what, name, where);
+    bool standIn = options_.standIns && std::string_view(what) != "shader";
+    if (standIn) diags_.warning(file(), loc, message + "; a stand-in takes its place (--stand-ins)");
+    else diags_.error(file(), loc, message);
+    return standIn;
 }
 
 void Builder::renderToTexture(const Command& c) {

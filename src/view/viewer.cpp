@@ -58,6 +58,7 @@ public:
         ScriptRequest request;
         request.script = options_.script;
         request.plan.includeDirs = options_.includeDirs;
+        request.plan.standIns = options_.standIns;
         request.plan.width = w;
         request.plan.height = h;
         // Every target can be looked at in the pass inspector, so every pass
@@ -186,6 +187,7 @@ private:
         }
         for (const auto& m : plan.meshes)
             if (!m.path.empty()) files.insert(m.path);  // OBJ models
+        files.erase("");  // a missing file with a stand-in (--stand-ins)
         std::vector<std::string> list(files.begin(), files.end());
         if (list != watch_.paths()) watch_.watch(list);
     }

@@ -101,15 +101,33 @@ TEST(Parser, EmptyGroup) {
     EXPECT_TRUE(p.diags.all().empty());
 }
 
-TEST(Parser, CommaAsDecimalPointYieldsFourItemsWithoutComplaint) {
+TEST(Parser, DecimalCommaInABlankSeparatedRangeIsReadAsAPointWithAWarning) {
     auto p = parse("Program P uK < 0,01 0.1 1.0 >\n");
     ASSERT_EQ(p.script.commands.size(), 1u);
     ASSERT_EQ(p.script.commands[0].args.size(), 3u);
     const Arg& r = p.script.commands[0].args[2];
-    ASSERT_EQ(dump(r), "<0 1 0.1 1>");
-    ASSERT_EQ(r.items.size(), 4u);
-    EXPECT_EQ(r.items[1].text, "01");
-    EXPECT_EQ(loc(r.items[1].loc), "1:18");
+    ASSERT_EQ(dump(r), "<0.01 0.1 1>");
+    EXPECT_EQ(r.items[0].text, "0,01");
+    EXPECT_EQ(loc(r.items[0].loc), "1:16");
+    EXPECT_EQ(messages(p.diags), (Strings{"1:16: warning: decimal comma in '0,01' read as 0.01; GLIB separates values "
+                                          "with commas, so write decimals with a point"}));
+}
+
+TEST(Parser, DecimalCommasInEveryKindOfGroup) {
+    auto p = parse("Program P uA <0,5 1,0 2,0> uB <-1,5 0 +1,5> uC {0,5 0,25 1}\nTriangles [0,5 1,5 0] [1 1 0] [0 0 0]\n");
+    EXPECT_EQ(dump(p.script), (Strings{"Program@1:1 'P' 'uA' <0.5 1 2> 'uB' <-1.5 0 1.5> 'uC' {0.5 0.25 1}",
+                                       "Triangles@2:1 [0.5 1.5 0] [1 1 0] [0 0 0]"}));
+    EXPECT_EQ(p.diags.warningCount(), 9);
+}
+
+TEST(Parser, CommasThatSeparateStaySeparators) {
+    // Commas alone, comma and blank, a colour that fits either way, outside a
+    // group, thousands, a vertex of three: all separators, no warning.
+    auto p = parse("Program P uA <0,3,3> uB <0, 3, 3> uC {1,0 0 0} uD [1,5 2]\nTranslate 1,5 2 3\n"
+                   "Program Q uE <1,000,000 0 1> uF <0,5 1>\n");
+    EXPECT_EQ(dump(p.script), (Strings{"Program@1:1 'P' 'uA' <0 3 3> 'uB' <0 3 3> 'uC' {1 0 0 0} 'uD' [1 5 2]",
+                                       "Translate@2:1 1 5 2 3",
+                                       "Program@3:1 'Q' 'uE' <1 0 0 0 1> 'uF' <0 5 1>"}));
     EXPECT_TRUE(p.diags.all().empty());
 }
 

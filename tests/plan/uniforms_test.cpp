@@ -79,8 +79,20 @@ TEST(UniformForms, ColoursArraysAndConstants) {
     EXPECT_EQ(l.uniforms()[5].values, D{-2.5});
 }
 
+TEST(UniformForms, DecimalCommaRangeIsASlider) {
+    ProgramLine l("uA < 0,01 0.1 1.0 >");
+    EXPECT_EQ(messages(l.p.diags), V{"3:16: warning: decimal comma in '0,01' read as 0.01; GLIB separates values with "
+                                     "commas, so write decimals with a point"});
+    ASSERT_EQ(l.uniforms().size(), 1u);
+    EXPECT_EQ(l.uniforms()[0].form, Form::Range);
+    EXPECT_EQ(l.uniforms()[0].min, 0.01);
+    EXPECT_EQ(l.uniforms()[0].values, D{0.1});
+    EXPECT_EQ(l.uniforms()[0].max, 1.0);
+}
+
 TEST(UniformForms, CommaDecimalRangeGetsTheHint) {
-    ProgramLine l("uA < 0,01 0.1 1.0 > uB <0 1 2>");
+    // Commas only (no blank between values): not read as decimal commas.
+    ProgramLine l("uA <0,01,0.1,1.0> uB <0 1 2>");
     EXPECT_EQ(messages(l.p.diags),
               V{"3:14: error: uniform 'uA': a range needs 3 values <min current max>, got 4 <0 01 0.1 1.0>; "
                 "commas separate values, so write decimals with a point"});

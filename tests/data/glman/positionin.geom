@@ -1,5 +1,5 @@
 #version 330 compatibility
-// Written for NVIDIA: gl_PositionIn[] is not in GLSL 3.30, and Mesa says so.
+// Written for NVIDIA: gl_PositionIn[] is not in GLSL 3.30; Glimmer translates it.
 layout(triangles) in;
 layout(triangle_strip, max_vertices = 3) out;
 

@@ -1,0 +1,6 @@
+#version 330 compatibility
+in vec4 gColor;
+void main( )
+{
+	gl_FragColor = gColor;
+}

@@ -1,0 +1,5 @@
+#version 330 compatibility
+void main( )
+{
+	gl_FragColor = gl_Color;
+}
