@@ -10,6 +10,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "geometry/mesh.h"
+#include "plan/limits.h"
 #include "plan/plan.h"
 #include "plan/uniform_forms.h"
 
@@ -59,13 +60,12 @@ public:
         // then the first WindowSize, then glman's 600x600.
         for (const auto& c : script_.commands) {
             if (c.kind == CommandKind::WindowSize) {
-                if (numbers(c, 2, 2)) {
+                // Checked before converting (1e47 does not fit an int);
+                // reported by the walk below.
+                if (c.args.size() == 2 && c.args[0].kind == Arg::Kind::Number && c.args[1].kind == Arg::Kind::Number &&
+                    wholeIn(c.args[0].number, 1, 16384) && wholeIn(c.args[1].number, 1, 16384)) {
                     plan_.width = int(c.args[0].number);
                     plan_.height = int(c.args[1].number);
-                    if (plan_.width < 1 || plan_.height < 1 || plan_.width > 16384 || plan_.height > 16384) {
-                        diags_.error(file(), c.loc, "WindowSize must be between 1 and 16384 pixels each way");
-                        plan_.width = plan_.height = 600;
-                    }
                 }
                 break;
             }
@@ -102,6 +102,10 @@ private:
                                                         a.text.empty() ? std::string("[...]") : a.text));
                 return false;
             }
+            if (!inFloatRange(a.number)) {
+                diags_.error(file(), a.loc, fmt::format("{}: '{}' is out of range (at most 1e30 either way)", c.spelled, a.text));
+                return false;
+            }
         }
         return true;
     }
@@ -125,7 +129,10 @@ private:
                                                       "acts here, on what is drawn after it, not on this glBegin",
                                                       imm_->step.draw.loc.line, c.spelled));
         switch (c.kind) {
-        case CommandKind::WindowSize: numbers(c, 2, 2); break;  // read before the walk
+        case CommandKind::WindowSize:  // read before the walk; checked here
+            if (numbers(c, 2, 2) && (!wholeIn(c.args[0].number, 1, 16384) || !wholeIn(c.args[1].number, 1, 16384)))
+                diags_.error(file(), c.loc, "WindowSize must be between 1 and 16384 pixels each way");
+            break;
         case CommandKind::Ortho: ortho(c); break;
         case CommandKind::Perspective:
             if (numbers(c, 0, 1)) {
@@ -210,15 +217,15 @@ private:
         case CommandKind::QuadXY:
         case CommandKind::QuadXZ:
         case CommandKind::QuadYZ:
-            if (numbers(c, 2, 4)) mesh(c, {num(c, 0, 0), num(c, 1, 1), num(c, 2, 1), num(c, 3, 1)});
+            if (numbers(c, 2, 4) && shapeCounts(c, 2, 1)) mesh(c, {num(c, 0, 0), num(c, 1, 1), num(c, 2, 1), num(c, 3, 1)});
             break;
         case CommandKind::Sphere:
         case CommandKind::WireSphere:
-            if (numbers(c, 0, 3)) mesh(c, {num(c, 0, 1), num(c, 1, 60), num(c, 2, 60)});
+            if (numbers(c, 0, 3) && shapeCounts(c, 1, 2)) mesh(c, {num(c, 0, 1), num(c, 1, 60), num(c, 2, 60)});
             break;
         case CommandKind::Torus:
         case CommandKind::WireTorus:
-            if (numbers(c, 0, 4)) mesh(c, {num(c, 0, 1), num(c, 1, .5), num(c, 2, 20), num(c, 3, 40)});
+            if (numbers(c, 0, 4) && shapeCounts(c, 2, 3)) mesh(c, {num(c, 0, 1), num(c, 1, .5), num(c, 2, 20), num(c, 3, 40)});
             break;
         case CommandKind::Box:
         case CommandKind::WireBox:
@@ -279,10 +286,25 @@ private:
         if (i >= c.args.size()) return true;
         double v = c.args[i].number;
         double lo = c.kind == CommandKind::Teapot || c.kind == CommandKind::WireTeapot ? 1 : 3;
-        if (v != std::floor(v) || v < lo || v > 1000) {
-            diags_.error(file(), c.args[i].loc, fmt::format("{}'s {} must be a whole number from {} to 1000", c.spelled,
-                                                            lo == 1 ? "subdivisions" : "slices", lo));
+        double hi = lo == 1 ? kMaxTeapotSubdivisions : kMaxShapeCount;  // 32 patches of (n+1)^2 vertices
+        if (!wholeIn(v, lo, hi)) {
+            diags_.error(file(), c.args[i].loc, fmt::format("{}'s {} must be a whole number from {} to {}", c.spelled,
+                                                            lo == 1 ? "subdivisions" : "slices", lo, hi));
             return false;
+        }
+        return true;
+    }
+
+    // Subdivision counts from argument `first` on (QuadXY's nx ny, Sphere's
+    // slices stacks, Torus's sides rings): whole numbers from `lo` to
+    // kMaxShapeCount, checked before anything converts them.
+    bool shapeCounts(const Command& c, size_t first, double lo) {
+        for (size_t i = first; i < c.args.size(); ++i) {
+            if (!wholeIn(c.args[i].number, lo, kMaxShapeCount)) {
+                diags_.error(file(), c.args[i].loc, fmt::format("{}'s counts must be whole numbers from {} to {}; not '{}'",
+                                                                c.spelled, lo, kMaxShapeCount, c.args[i].text));
+                return false;
+            }
         }
         return true;
     }
@@ -317,8 +339,8 @@ private:
             return std::nullopt;
         }
         for (const auto& i : a.items)
-            if (i.kind != Arg::Kind::Number) {
-                diags_.error(file(), i.loc, fmt::format("{} takes numbers; '{}' is not a number", c.spelled, i.text));
+            if (i.kind != Arg::Kind::Number || !inFloatRange(i.number)) {
+                diags_.error(file(), i.loc, fmt::format("{} takes numbers of at most 1e30; '{}' is not one", c.spelled, i.text));
                 return std::nullopt;
             }
         return glm::dvec3(a.items[0].number, a.items[1].number, a.items.size() > 2 ? a.items[2].number : 0.0);
@@ -394,6 +416,7 @@ private:
             diags_.warning(file(), b.step.draw.loc, "glBegin ... glEnd with no glVertex draws nothing");
             return;
         }
+        if (!countDraw(b.step.draw.loc)) return;
         MeshDecl m;
         m.shape = CommandKind::GlBegin;
         m.params = {double(int(b.primitive))};
@@ -640,6 +663,12 @@ private:
     }
 
     void renderToTexture(const Command& c) {
+        if (plan_.passes.size() > kMaxPasses) {
+            if (plan_.passes.size() == kMaxPasses + 1)
+                diags_.error(file(), c.loc, fmt::format("more than {} RenderToTexture passes", kMaxPasses));
+            plan_.passes.push_back(Pass{});  // counted once, drawn never
+            return;
+        }
         Pass p;
         p.loc = c.loc;
         for (const auto& a : c.args) {
@@ -736,6 +765,14 @@ private:
         return it->second;
     }
 
+    // Counts a draw; false (reported once) past kMaxDraws.
+    bool countDraw(SourceLoc loc) {
+        if (++draws_ <= kMaxDraws) return true;
+        if (draws_ == kMaxDraws + 1)
+            diags_.error(file(), loc, fmt::format("more than {} draws; this one and those after it are not drawn", kMaxDraws));
+        return false;
+    }
+
     // A draw with the state in force now; its mesh is filled in by the caller.
     Step drawStep(SourceLoc loc) {
         auto [w, h] = aspectSize();
@@ -758,6 +795,7 @@ private:
 
     void mesh(const Command& c, std::vector<double> params, const std::string& path = {},
               std::vector<double> points = {}) {
+        if (!countDraw(c.loc)) return;
         MeshDecl m;
         m.shape = c.kind;
         m.params = std::move(params);
@@ -777,7 +815,8 @@ private:
         if (d.program < 0) return reads;
         std::set<int> units = {0};
         for (const auto& u : plan_.programs[d.program].uniforms)
-            if (u.form == UniformSetting::Form::Constant && u.values.size() == 1) units.insert(int(u.values[0]));
+            if (u.form == UniformSetting::Form::Constant && u.values.size() == 1 && wholeIn(u.values[0], 0, 31))
+                units.insert(int(u.values[0]));
         for (int unit : units) {
             auto it = d.units.find(unit);
             if (it != d.units.end()) reads.insert(it->second);
@@ -797,13 +836,15 @@ private:
         }
         plan_.passes = std::move(kept);
 
+        std::vector<char> flatMesh(plan_.meshes.size());  // once per mesh, not per draw
+        for (size_t i = 0; i < plan_.meshes.size(); ++i) flatMesh[i] = plan_.meshes[i].flat();
         for (auto& p : plan_.passes) {
             int draws = 0;
             bool solid = false;
             for (const auto& s : p.steps) {
                 if (s.kind != Step::Kind::Draw) continue;
                 ++draws;
-                if (!plan_.meshes[s.draw.mesh].flat()) solid = true;
+                if (!flatMesh[size_t(s.draw.mesh)]) solid = true;
                 for (int t : drawReads(s.draw)) p.reads.insert(t);
             }
             // One flat quad cannot hide anything; depth only matters with more.
@@ -854,6 +895,7 @@ private:
     int program_ = -1;
     int patchVertices_ = 3;
     std::map<MeshDecl, int> meshIndex_;
+    size_t draws_ = 0;
     // An open glBegin: the draw as the state stood at glBegin, and its vertices.
     struct Immediate {
         Step step;
@@ -874,23 +916,33 @@ bool MeshDecl::flat() const {
     case CommandKind::DiskXY: return true;
     case CommandKind::Triangles:
     case CommandKind::GlBegin: {
-        // All points in one plane: the plane through the first three points
-        // that span one, within a small part of the points' extent.
+        // All points in one plane, within a small part of the points' extent.
         size_t n = points.size() / 3;
         auto p = [&](size_t i) { return glm::dvec3(points[3 * i], points[3 * i + 1], points[3 * i + 2]); };
         if (n < 4) return true;
+        // Linear in the points (a search over pairs took seconds for 48k
+        // points): the point farthest from the first gives a direction, the
+        // one farthest from that line a plane; all must lie in it.
         glm::dvec3 lo = p(0), hi = p(0);
         for (size_t i = 1; i < n; ++i) {
             lo = glm::min(lo, p(i));
             hi = glm::max(hi, p(i));
         }
-        double eps = 1e-6 * std::max(glm::length(hi - lo), 1e-30);
-        glm::dvec3 normal(0.0);
-        for (size_t i = 1; i + 1 < n && glm::length(normal) <= eps * eps; ++i)
-            for (size_t j = i + 1; j < n && glm::length(normal) <= eps * eps; ++j)
-                normal = glm::cross(p(i) - p(0), p(j) - p(0));
-        if (glm::length(normal) <= eps * eps) return true;  // all on one line
-        normal = glm::normalize(normal);
+        const double eps = 1e-6 * std::max(glm::length(hi - lo), 1e-30);
+        size_t a = 0;
+        for (size_t i = 1; i < n; ++i)
+            if (glm::length(p(i) - p(0)) > glm::length(p(a) - p(0))) a = i;
+        const glm::dvec3 dir = p(a) - p(0);
+        if (glm::length(dir) <= eps) return true;  // all at one point
+        const glm::dvec3 unit = glm::normalize(dir);
+        size_t b = 0;
+        double far = 0;
+        for (size_t i = 1; i < n; ++i) {
+            double d = glm::length(glm::cross(p(i) - p(0), unit));
+            if (d > far) far = d, b = i;
+        }
+        if (far <= eps) return true;  // all on one line
+        const glm::dvec3 normal = glm::normalize(glm::cross(dir, p(b) - p(0)));
         for (size_t i = 1; i < n; ++i)
             if (std::abs(glm::dot(p(i) - p(0), normal)) > eps) return false;
         return true;
