@@ -1,6 +1,7 @@
 // The subcommands of the glimmer program. Each returns the process's exit
 // code: 0 success, 1 script or shader errors, 2 usage errors.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,8 @@ struct CommonOptions {
     std::vector<std::string> includeDirs;
     std::vector<std::string> sets;  // name=value
     std::string size;               // WxH
+    bool sandbox = false;           // files only inside the script's folder and -I folders
+    std::uint64_t maxMemoryMiB = 0; // 0: the default budget (plan/limits.h)
 };
 
 struct RenderOptions : CommonOptions {
@@ -56,6 +59,9 @@ struct ViewOptions;
 void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
 int runCheck(const CommonOptions& options);
+
+// --sandbox and --max-memory (app/safety_options.cpp).
+void addSafetyOptions(CLI::App* sub, CommonOptions& options);
 
 // "512x512" -> 512, 512. False on anything else.
 bool parseSize(const std::string& text, int& w, int& h);

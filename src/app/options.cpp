@@ -26,6 +26,7 @@ void addCommon(CLI::App* sub, CommonOptions& o) {
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
     sub->add_option("--set", o.sets, "NAME=VALUE for a uniform range or checkbox (repeatable)");
     sub->add_option("--size", o.size, "output size WxH (default: WindowSize, else 600x600)");
+    addSafetyOptions(sub, o);
 }
 
 }  // namespace
@@ -57,6 +58,7 @@ void addViewCommand(CLI::App& app, ViewOptions& o) {
     sub->add_option("--exec", o.exec, "commands to run, separated by ';': set NAME VALUE, reload, save FILE.png, "
                                       "show UNIT|screen, quit");
     sub->add_flag("!--no-stdin", o.readStdin, "do not read commands from standard input");
+    sub->add_flag("--sandbox", o.sandbox, "read only files inside the script's folder and -I folders");
 }
 
 }  // namespace glimmer

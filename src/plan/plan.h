@@ -14,6 +14,7 @@
 
 #include "lang/diagnostics.h"
 #include "lang/script.h"
+#include "plan/limits.h"
 
 namespace glimmer {
 
@@ -138,6 +139,8 @@ struct PlanOptions {
     int width = 0, height = 0;             // 0: from the script
     std::vector<std::string> includeDirs;  // -I
     std::set<int> keepTargets;             // texture units the user wants to see (--dump): never dropped
+    std::uint64_t maxMemoryBytes = kDefaultMaxMemoryMiB << 20;  // textures and targets together (--max-memory)
+    bool sandbox = false;                  // --sandbox: files only inside the script's folder and -I folders (plan/sandbox.h)
 };
 
 // Resolves and checks a parsed script. Problems go to `diags`; the plan is

@@ -12,6 +12,8 @@
 #include "geometry/mesh.h"
 #include "plan/limits.h"
 #include "plan/plan.h"
+#include "plan/memory_budget.h"
+#include "plan/sandbox.h"
 #include "plan/uniform_forms.h"
 
 namespace glimmer {
@@ -495,10 +497,29 @@ private:
 
     // Finds a texture file; false (reported) when it is not there.
     bool textureFile(const Arg& a, std::string& path) {
-        std::vector<std::string> tried;
-        path = resolveFile(file(), a.text, options_.includeDirs, &tried);
-        if (path.empty()) notFound(a.loc, "texture", a.text, tried);
+        path = findFile(a, "texture");
         return !path.empty();
+    }
+
+    // Resolves a file the script names, as glman would or, under --sandbox,
+    // only inside the sandbox; empty (reported) when it cannot be used.
+    std::string findFile(const Arg& a, const char* what) {
+        std::vector<std::string> tried;
+        if (!options_.sandbox) {
+            std::string path = resolveFile(file(), a.text, options_.includeDirs, &tried);
+            if (path.empty()) notFound(a.loc, what, a.text, tried);
+            return path;
+        }
+        std::string path, why;
+        switch (resolveSandboxed(file(), a.text, options_.includeDirs, path, tried, why)) {
+        case SandboxLookup::Found: return path;
+        case SandboxLookup::NotFound: notFound(a.loc, what, a.text, tried); break;
+        case SandboxLookup::Outside:
+            diags_.error(file(), a.loc, fmt::format("{} '{}' is outside the sandbox ({}); --sandbox reads only files "
+                                                    "in the script's folder and -I folders", what, a.text, why));
+            break;
+        }
+        return {};
     }
 
     // Binds `t` to `unit` where the command stands. Scripts re-bind the same
@@ -717,12 +738,8 @@ private:
         s.kind = kind;
         s.shown = c.args[0].text;
         s.loc = c.args[0].loc;
-        std::vector<std::string> tried;
-        s.path = resolveFile(file(), s.shown, options_.includeDirs, &tried);
-        if (s.path.empty()) {
-            notFound(c.args[0].loc, "shader", s.shown, tried);
-            return;
-        }
+        s.path = findFile(c.args[0], "shader");
+        if (s.path.empty()) return;
         stages_[kind] = s;
     }
 
@@ -750,12 +767,8 @@ private:
             diags_.error(file(), c.loc, fmt::format("{} takes one .obj file name", c.spelled));
             return;
         }
-        std::vector<std::string> tried;
-        std::string path = resolveFile(file(), c.args[0].text, options_.includeDirs, &tried);
-        if (path.empty()) {
-            notFound(c.args[0].loc, "model", c.args[0].text, tried);
-            return;
-        }
+        std::string path = findFile(c.args[0], "model");
+        if (path.empty()) return;
         mesh(c, {}, path);
     }
 
@@ -874,6 +887,7 @@ private:
             }
             if (p->needed) wanted.insert(p->reads.begin(), p->reads.end());
         }
+        checkMemoryBudget(plan_, options_.maxMemoryBytes, diags_);
     }
 
     const Script& script_;

@@ -55,6 +55,7 @@ public:
     bool prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer, Diagnostics& diags) {
         PlanOptions planOptions;
         planOptions.includeDirs = options_.includeDirs;
+        planOptions.sandbox = options_.sandbox;
         planOptions.width = w;
         planOptions.height = h;
         // Every target can be looked at in the pass inspector, so every pass

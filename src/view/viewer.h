@@ -26,6 +26,7 @@ struct ViewOptions {
     std::string size;  // WxH; else WindowSize; else 600x600
     std::string exec;  // commands separated by ';'
     bool readStdin = true;
+    bool sandbox = false;  // --sandbox
 };
 
 int runView(const ViewOptions& options);

@@ -134,3 +134,95 @@ TEST(CliHostile, TerminalEscapesInTheScriptAreShownEscaped) {
 
 }  // namespace
 }  // namespace glimmer_cli
+
+namespace glimmer_cli {
+namespace {
+
+// A script folder with a shader and an image, and secrets beside it.
+struct Sandbox {
+    TempDir dir;
+    std::string scripts, secret;
+    Sandbox() {
+        fs::create_directories(dir.path() / "class" / "student");
+        scripts = (dir.path() / "class" / "student").string();
+        secret = writeFile(dir, "secret.frag", "#version 330 compatibility\nvoid main() { gl_FragColor = vec4(1.); }\n");
+        fs::copy_file(kData + "plain.vert", scripts + "/plain.vert");
+        fs::copy_file(kData + "solid.frag", scripts + "/solid.frag");
+        fs::create_symlink(secret, scripts + "/link.frag");
+    }
+    std::string script(const std::string& text) const {
+        std::string p = scripts + "/s.glib";
+        std::ofstream(p) << text;
+        return p;
+    }
+};
+
+RunResult checkSandboxed(const std::string& script, std::vector<std::string> extra = {}) {
+    std::vector<std::string> args{"check", script, "--backend", "osmesa", "--sandbox"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runGlimmer(args);
+}
+
+const std::string kOutsideTail = "; --sandbox reads only files in the script's folder and -I folders\n";
+
+TEST(CliSandbox, FilesInTheScriptsFolderAreRead) {
+    Sandbox sb;
+    auto r = checkSandboxed(sb.script("Vertex plain.vert\nFragment solid.frag\nProgram P uLevel <0. .5 1.>\nQuadXY 0 1\n"));
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+}
+
+TEST(CliSandbox, AbsolutePathsDotDotAndSymlinksOutAreRefused) {
+    Sandbox sb;
+    auto s = sb.script("Vertex /etc/passwd\nFragment ../../secret.frag\nFragment link.frag\nTexture2D 5 /proc/self/environ\n");
+    auto r = checkSandboxed(s);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    const std::string real = fs::canonical(sb.secret).string();
+    EXPECT_EQ(r.err, s + ":1:8: error: shader '/etc/passwd' is outside the sandbox (an absolute path)" + kOutsideTail +
+                         "Vertex /etc/passwd\n       ^\n" +
+                         s + ":2:10: error: shader '../../secret.frag' is outside the sandbox (it leads to " + real + ")" +
+                         kOutsideTail + "Fragment ../../secret.frag\n         ^\n" +
+                         s + ":3:10: error: shader 'link.frag' is outside the sandbox (it leads to " + real + ")" +
+                         kOutsideTail + "Fragment link.frag\n         ^\n" +
+                         s + ":4:13: error: texture '/proc/self/environ' is outside the sandbox (an absolute path)" +
+                         kOutsideTail + "Texture2D 5 /proc/self/environ\n            ^\n"
+                         "4 errors, 0 warnings\n");
+}
+
+TEST(CliSandbox, AnIncludeFolderWidensTheSandbox) {
+    Sandbox sb;
+    auto s = sb.script("Vertex plain.vert\nFragment secret.frag\nProgram P\nQuadXY 0 1\n");
+    auto r = checkSandboxed(s, {"-I", sb.dir.path().string()});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    // and without -I it is not found (the project folders are not searched)
+    r = checkSandboxed(s);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find("error: cannot find shader 'secret.frag' (looked in " + sb.scripts + ")"), std::string::npos)
+        << r.err;
+}
+
+TEST(CliSandbox, AFolderNamedAsATextureIsRefused) {
+    Sandbox sb;
+    fs::create_directories(sb.scripts + "/pics");
+    auto s = sb.script("Texture2D 5 pics\n");
+    auto r = checkSandboxed(s);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find(s + ":1:13: error: texture 'pics' is outside the sandbox (not a regular file)"),
+              std::string::npos)
+        << r.err;
+}
+
+TEST(CliLimits, TargetsPastTheMemoryBudgetAreAnErrorOnTheirLine) {
+    TempDir dir;
+    auto s = writeFile(dir, "mem.glib", "Texture2D 6 16384 16384 RGBA32F\nRenderToTexture 6\nQuadXY 0 1\n");
+    auto r = runGlimmer({"check", s, "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(r.err, s + ":1:1: error: textures and render targets need 4099 MiB by this line, more than the memory "
+                         "budget of 2048 MiB (--max-memory)\n"
+                         "Texture2D 6 16384 16384 RGBA32F\n^\n1 error, 0 warnings\n");
+    r = runGlimmer({"check", s, "--backend", "osmesa", "--max-memory", "1"});
+    EXPECT_NE(r.err.find("need 4099 MiB by this line, more than the memory budget of 1 MiB"), std::string::npos) << r.err;
+}
+
+}  // namespace
+}  // namespace glimmer_cli
