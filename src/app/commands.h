@@ -1,6 +1,7 @@
 // The subcommands of the glimmer program: CLI11 wiring and one run function
 // each, returning the process's exit code (driver/options.h).
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,8 @@ struct ViewOptions;
 void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
 int runCheck(const CommonOptions& options);
+
+// --sandbox and --max-memory (app/safety_options.cpp).
+void addSafetyOptions(CLI::App* sub, CommonOptions& options);
 
 }  // namespace glimmer

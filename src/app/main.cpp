@@ -2,15 +2,20 @@
 // PNG; `glimmer check` finds every problem without drawing; `glimmer view`
 // (or plain `glimmer script.glib`) opens the live window.
 #include <iostream>
+#include <new>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "lang/diagnostics.h"
 #include "view/viewer.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+int run(int argc, char** argv) {
     using namespace glimmer;
     CLI::App app{"Glimmer: a GLIB-style scripted shader playground"};
     app.require_subcommand(1);
@@ -52,4 +57,21 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("sheet")) return runSheet(sheet);
     if (app.got_subcommand("tradeoff")) return runTradeoff(tradeoff);
     return kExitUsage;
+}
+
+}  // namespace
+
+// Nothing a script does may abort the process (exit 134): whatever escapes a
+// command is reported, and the exit code stays 1 (script) as documented.
+int main(int argc, char** argv) {
+    try {
+        return run(argc, argv);
+    } catch (const std::bad_alloc&) {
+        std::cerr << "glimmer: error: out of memory (the script asks for more than this machine can give)\n";
+    } catch (const std::exception& e) {
+        std::cerr << "glimmer: error: " << glimmer::sanitizeForTerminal(e.what(), false) << "\n";
+    } catch (...) {
+        std::cerr << "glimmer: error: unexpected failure\n";
+    }
+    return glimmer::kExitScriptError;
 }

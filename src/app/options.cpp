@@ -16,6 +16,7 @@ void addCommon(CLI::App* sub, CommonOptions& o) {
     sub->add_option("--size", o.size, "output size WxH (default: WindowSize, else 600x600)");
     sub->add_flag("--stand-ins", o.standIns, "a missing image, cube-map face, 3-D .tex or OBJ is a warning and a "
                                             "stand-in takes its place (a missing shader stays an error)");
+    addSafetyOptions(sub, o);
 }
 
 }  // namespace
@@ -49,6 +50,7 @@ void addViewCommand(CLI::App& app, ViewOptions& o) {
     sub->add_flag("!--no-stdin", o.readStdin, "do not read commands from standard input");
     sub->add_flag("--stand-ins,!--no-stand-ins", o.standIns, "replace missing images and models by stand-ins, with a "
                                                             "warning (the default in view); --no-stand-ins: an error");
+    sub->add_flag("--sandbox", o.sandbox, "read only files inside the script's folder and -I folders");
 }
 
 }  // namespace glimmer

@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
+#include "app/commands.h"
 #include "driver/session.h"
 #include "image/text.h"
 #include "plan/dependencies.h"
@@ -47,6 +48,7 @@ void addSheetCommand(CLI::App& app, SheetOptions& o) {
     sub->add_option("--set", o.sets, "NAME=VALUE for the uniforms that do not vary (repeatable)");
     sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless");
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
+    addSafetyOptions(sub, o);
 }
 
 int runSheet(const SheetOptions& o) {

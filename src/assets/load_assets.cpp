@@ -1,12 +1,13 @@
 #include "assets/assets.h"
 
-#include <fstream>
 
 #include <fmt/format.h>
 
 #include "assets/gs_compat.h"
 #include "assets/stand_ins.h"
 #include "image/cubemap.h"
+#include "plan/limits.h"
+#include "util/read_file.h"
 
 namespace glimmer {
 namespace {
@@ -26,10 +27,11 @@ bool loadTexture(const TextureDecl& t, TextureFile& out, std::string& why) {
     return out.loaded;
 }
 
-std::optional<std::string> readShader(const ShaderStage& stage) {
-    std::ifstream f(stage.path, std::ios::binary);
-    if (!f) return std::nullopt;
-    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+// Only a regular file, and never more than kMaxShaderBytes (util/read_file.h).
+std::optional<std::string> readShader(const ShaderStage& stage, std::string& why) {
+    std::string text;
+    if (!readRegularFile(stage.path, kMaxShaderBytes, text, why)) return std::nullopt;
+    return text;
 }
 
 }  // namespace
@@ -60,9 +62,10 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
     for (size_t i = 0; i < plan.programs.size(); ++i) {
         if (!out.used.programs[i]) continue;
         for (const auto& stage : plan.programs[i].stages) {
-            auto text = readShader(stage);
+            std::string why;
+            auto text = readShader(stage, why);
             if (text) sources.add(stage.path, *text);
-            else diags.error(file, stage.loc, fmt::format("cannot read shader '{}'", stage.shown));
+            else diags.error(file, stage.loc, fmt::format("cannot read shader '{}': it {}", stage.shown, why));
             out.shaderTexts[i].push_back(std::move(text));
         }
     }

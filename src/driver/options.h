@@ -3,6 +3,7 @@
 // codes and the small parsers every command shares live here too, so the
 // viewer, the benchmarks and the tests need nothing from the executable.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -18,6 +19,8 @@ struct CommonOptions {
     std::vector<std::string> sets;  // name=value
     std::string size;               // WxH
     bool standIns = false;          // --stand-ins: missing images and models are replaced (assets/stand_ins.h)
+    bool sandbox = false;           // files only inside the script's folder and -I folders
+    std::uint64_t maxMemoryMiB = 0; // 0: the default budget (plan/limits.h)
 };
 
 struct RenderOptions : CommonOptions {

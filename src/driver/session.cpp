@@ -19,6 +19,8 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
     PlanOptions& planOptions = request.plan;
     planOptions.includeDirs = options.includeDirs;
     planOptions.standIns = options.standIns;
+    planOptions.sandbox = options.sandbox;
+    if (options.maxMemoryMiB > 0) planOptions.maxMemoryBytes = options.maxMemoryMiB << 20;
     planOptions.keepTargets = keepUnits;
     if (!options.size.empty() && !parseSize(options.size, planOptions.width, planOptions.height)) {
         std::cerr << fmt::format("glimmer: error: --size '{}' is not WIDTHxHEIGHT (1 to 16384 each)\n", options.size);

@@ -5,6 +5,7 @@
 #include <tiny_obj_loader.h>
 
 #include "geometry/mesh.h"
+#include "util/read_file.h"
 
 namespace glimmer {
 
@@ -22,7 +23,15 @@ bool loadObj(const std::string& path, Mesh& out, std::string& error) {
     config.triangulate = true;
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path, config)) {
+    // Read here, not by tinyobjloader: only a regular file of bounded size,
+    // and no .mtl file it names (materials are not used, and a model must
+    // not open files the script could not name itself).
+    std::string text, why;
+    if (!readRegularFile(path, kMaxInputFileBytes, text, why)) {
+        error = "cannot load OBJ '" + path + "': it " + why;
+        return false;
+    }
+    if (!reader.ParseFromString(text, std::string(), config)) {
         std::string reason = trimmed(reader.Error());
         if (reason.empty()) reason = "unknown error";
         error = "cannot load OBJ '" + path + "': " + reason;

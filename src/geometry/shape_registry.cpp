@@ -29,31 +29,32 @@ Mesh quadBox(const std::vector<double>& p) { return makeQuadBox(float(p[0])); }
 Mesh pointCloud(const std::vector<double>& p) { return makePointCloud(whole(p[0]), float(p[1])); }
 Mesh jitterCloud(const std::vector<double>& p) { return makeJitterCloud(whole(p[0]), float(p[1]), float(p[2])); }
 
-constexpr ShapeRule::Count kSlices{2, 3, 1000, "slices"};
+constexpr ShapeRule::Count kSlices{2, 3, kMaxSubdivisions, "slices"};
+constexpr ShapeRule::Count kTeapotSubdivisions{1, 1, kMaxTeapotSubdivisions, "subdivisions"};
 
-// name, source, min, max, defaults, one size for all, count, flatness, build, wire of
+// name, source, min, max, defaults, one size for all, count, flatness, build, wire of, counts from, counts lo
 const ShapeRule kShapes[] = {
-    {"QuadXY", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadXY, {}},
-    {"QuadXZ", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadXZ, {}},
-    {"QuadYZ", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadYZ, {}},
-    {"Sphere", S::Numbers, 0, 3, {1, 60, 60}, false, {}, F::Never, sphere, {}},
-    {"Torus", S::Numbers, 0, 4, {1, .5, 20, 40}, false, {}, F::Never, torus, {}},
+    {"QuadXY", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadXY, {}, 2, 1},
+    {"QuadXZ", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadXZ, {}, 2, 1},
+    {"QuadYZ", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadYZ, {}, 2, 1},
+    {"Sphere", S::Numbers, 0, 3, {1, 60, 60}, false, {}, F::Never, sphere, {}, 1, 2},
+    {"Torus", S::Numbers, 0, 4, {1, .5, 20, 40}, false, {}, F::Never, torus, {}, 2, 3},
     {"Box", S::Numbers, 0, 3, {2, 2, 2}, true, {}, F::Never, box, {}},
     {"Cylinder", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cylinder, {}},
     {"Cone", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cone, {}},
-    {"DiskXY", S::Numbers, 0, 2, {1, 40}, false, {1, 3, 1000, "slices"}, F::Always, disk, {}},
-    {"Teapot", S::Numbers, 0, 2, {1, 10}, false, {1, 1, 1000, "subdivisions"}, F::Never, teapot, {}},
+    {"DiskXY", S::Numbers, 0, 2, {1, 40}, false, {1, 3, kMaxSubdivisions, "slices"}, F::Always, disk, {}},
+    {"Teapot", S::Numbers, 0, 2, {1, 10}, false, kTeapotSubdivisions, F::Never, teapot, {}},
     {"QuadBox", S::Numbers, 0, 1, {1}, false, {}, F::Never, quadBox, {}},
     // glman-like: `PointCloud [count [size]]`, count points in [-size, size]^3.
     {"PointCloud", S::Numbers, 0, 2, {1000, 1}, false, {0, 1, 1000000, "count"}, F::Never, pointCloud, {}},
     // `JitterCloud [n [size [jitter]]]`: an n^3 grid filling [-size, size]^3, each point jittered.
     {"JitterCloud", S::Numbers, 0, 3, {10, 1, .5}, false, {0, 1, 100, "count"}, F::Never, jitterCloud, {}},
     {"WireBox", S::Numbers, 0, 3, {2, 2, 2}, true, {}, F::Never, box, "Box"},
-    {"WireSphere", S::Numbers, 0, 3, {1, 60, 60}, false, {}, F::Never, sphere, "Sphere"},
-    {"WireTorus", S::Numbers, 0, 4, {1, .5, 20, 40}, false, {}, F::Never, torus, "Torus"},
+    {"WireSphere", S::Numbers, 0, 3, {1, 60, 60}, false, {}, F::Never, sphere, "Sphere", 1, 2},
+    {"WireTorus", S::Numbers, 0, 4, {1, .5, 20, 40}, false, {}, F::Never, torus, "Torus", 2, 3},
     {"WireCylinder", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cylinder, "Cylinder"},
     {"WireCone", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cone, "Cone"},
-    {"WireTeapot", S::Numbers, 0, 2, {1, 10}, false, {1, 1, 1000, "subdivisions"}, F::Never, teapot, "Teapot"},
+    {"WireTeapot", S::Numbers, 0, 2, {1, 10}, false, kTeapotSubdivisions, F::Never, teapot, "Teapot"},
     // Built from points the script lists, or from a file.
     {"Triangles", S::Points, 0, 0, {}, false, {}, F::IfPointsCoplanar, nullptr, {}},
     {"LinesAdjacency", S::Points, 0, 0, {}, false, {}, F::Never, nullptr, {}},

@@ -15,6 +15,12 @@
 
 namespace glimmer {
 
+// The most slices, stacks, rings or subdivisions of one shape (and 300 for
+// the teapot: 32 patches of (n+1)^2 vertices each); plan/limits.h lists
+// every bound an untrusted script meets.
+constexpr double kMaxSubdivisions = 1000;
+constexpr double kMaxTeapotSubdivisions = 300;
+
 struct ShapeRule {
     // A number of the command that must be a whole number in [lo, hi];
     // `what` names it in the error ("slices", "subdivisions", "count").
@@ -37,6 +43,11 @@ struct ShapeRule {
     // shape's minimum are raised to it, as glman did.
     Mesh (*build)(const std::vector<double>& numbers) = nullptr;
     std::string_view wireOf;         // "Sphere" for WireSphere: the wireframe of that row's solid
+    // Subdivision counts from this argument on (QuadXY's nx ny, Sphere's
+    // slices stacks, Torus's sides rings): whole numbers from countsLo to
+    // kMaxSubdivisions, checked before anything converts them. -1: none.
+    int countsFrom = -1;
+    double countsLo = 1;
 };
 
 // The row of a shape command (by its canonical spelling), or null.

@@ -1,6 +1,7 @@
 // Renderer::prepare: uploading what the CPU load step read, building
 // programs, making render targets and the screen.
 #include "gl/renderer_internal.h"
+#include "gl/clear_texture.h"
 
 #include <fmt/format.h>
 
@@ -83,10 +84,11 @@ void Renderer::uploadTextures(const Plan& plan, const Assets& assets) {
             obj.height = img.height;
         } else {
             // Start targets black rather than with whatever memory held, in
-            // the format the script asked for.
-            std::vector<float> zeros(size_t(t.width) * size_t(t.height) * 4, 0.f);
+            // the format the script asked for; cleared on the GPU.
             gl_->TexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat(t.format)), t.width, t.height, 0, GL_RGBA, GL_FLOAT,
-                           zeros.data());
+                            nullptr);
+            clearTexture2D(*gl_, id);
+            gl_->BindTexture(target, id);
             if (t.mips) {
                 gl_->TexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
                 gl_->GenerateMipmap(GL_TEXTURE_2D);

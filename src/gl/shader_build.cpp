@@ -2,10 +2,10 @@
 
 #include <algorithm>
 #include <cstring>
-#include <regex>
 #include <sstream>
 
 #include <fmt/format.h>
+
 
 namespace glimmer {
 
@@ -65,36 +65,6 @@ PreparedSource prepareSource(const std::string& source, const std::string& prelu
     return out;
 }
 
-void mapCompilerLog(const std::string& log, const PreparedSource& src, const std::string& file,
-                    const std::string& fallbackFile, SourceLoc fallback, Severity defaultSeverity,
-                    Diagnostics& diags) {
-    // Mesa's preprocessor (glcpp) writes "0:3(1): preprocessor error: ...".
-    static const std::regex mesa(R"(^\s*\d+:(\d+)\((\d+)\):\s*(?:preprocessor\s+)?(error|warning)\s*:?\s*(.*)$)");
-    static const std::regex nvidia(R"(^\s*\d+\((\d+)\)\s*:\s*(error|warning)\s+\w+:\s*(.*)$)");
-    std::istringstream in(log);
-    std::string line, unmatched;
-    while (std::getline(in, line)) {
-        if (!line.empty() && line.back() == '\r') line.pop_back();
-        std::smatch m;
-        Diagnostic d;
-        d.file = file;
-        if (std::regex_match(line, m, mesa)) {
-            d.loc = {src.originalLine(std::stoi(m[1])), std::stoi(m[2])};
-            d.severity = m[3] == "error" ? Severity::Error : Severity::Warning;
-            d.message = m[4];
-        } else if (std::regex_match(line, m, nvidia)) {
-            d.loc = {src.originalLine(std::stoi(m[1])), 0};
-            d.severity = m[2] == "error" ? Severity::Error : Severity::Warning;
-            d.message = m[3];
-        } else {
-            if (line.find_first_not_of(" \t") != std::string::npos) unmatched += (unmatched.empty() ? "" : "\n") + line;
-            continue;
-        }
-        diags.add(d);
-    }
-    if (!unmatched.empty()) diags.add({defaultSeverity, fallbackFile, fallback, unmatched});
-}
-
 namespace {
 
 GLenum stageEnum(ShaderStage::Kind k) {
@@ -112,7 +82,9 @@ std::string infoLog(const GlApi& gl, unsigned object, bool isProgram) {
     GLint length = 0;
     if (isProgram) gl.GetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
     else gl.GetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
-    std::string log(size_t(std::max(length, 1)), '\0');
+    // A driver's log is bounded too: a hostile shader can make it huge.
+    length = std::clamp(length, 1, 1 << 20);
+    std::string log(size_t(length), '\0');
     if (isProgram) gl.GetProgramInfoLog(object, length, nullptr, log.data());
     else gl.GetShaderInfoLog(object, length, nullptr, log.data());
     log.resize(std::strlen(log.c_str()));

@@ -1,5 +1,7 @@
 #include "gl/uniform_upload.h"
 
+#include "plan/limits.h"
+
 #include <cmath>
 
 #include <fmt/format.h>
@@ -172,8 +174,8 @@ void uploadUniform(const GlApi& gl, const ActiveUniform& u, const std::vector<do
     std::vector<float> f(n, 0.f);
     std::vector<GLint> i(n, 0);
     for (size_t k = 0; k < n && k < values.size(); ++k) {
-        f[k] = float(values[k]);
-        i[k] = t.base == Base::Bool ? (values[k] != 0) : GLint(std::lround(values[k]));
+        f[k] = clampToFloat(values[k]);
+        i[k] = t.base == Base::Bool ? (values[k] != 0) : GLint(clampToInt(std::round(values[k])));
     }
     GLsizei count = std::max(u.size, 1);
     switch (t.base) {

@@ -1,6 +1,7 @@
 #include "image/image.h"
+#include "image/sniff.h"
+#include "util/read_file.h"
 
-#include <stb/stb_image.h>
 #include <stb/stb_image_write.h>
 #include <tinyexr.h>
 #include <png.h>
@@ -35,83 +36,31 @@ Image Image::rgbaF32(int w, int h) {
 }
 
 bool readFileBytes(const std::string& path, std::vector<std::uint8_t>& out, std::string& error) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) {
-        error = "cannot open " + path;
-        return false;
-    }
-    out.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    if (in.bad()) {
-        error = "cannot read " + path;
+    if (!readRegularFile(path, kMaxInputFileBytes, out, error)) {
+        // "cannot open PATH" as before; "PATH is not a regular file", ...
+        error = error.rfind("cannot open", 0) == 0 ? "cannot open " + path : path + " " + error;
         return false;
     }
     return true;
 }
-
-namespace {
-
-bool startsWith(const std::vector<std::uint8_t>& b, const char* magic, std::size_t n) {
-    return b.size() >= n && std::memcmp(b.data(), magic, n) == 0;
-}
-
-bool endsWith(const std::string& s, const std::string& suffix) {
-    if (s.size() < suffix.size()) return false;
-    return std::equal(suffix.rbegin(), suffix.rend(), s.rbegin(),
-                      [](char a, char b) { return std::tolower((unsigned char)a) == b; });
-}
-
-struct StbFree {
-    void operator()(void* p) const { stbi_image_free(p); }
-};
-
-bool decodeStb(const std::vector<std::uint8_t>& bytes, bool hdr, Image& out, std::string& error) {
-    // stb takes an int length; larger files are not pictures we can use anyway.
-    if (bytes.size() > std::size_t(0x7fffffff)) {
-        error = "image file too large";
-        return false;
-    }
-    int w = 0, h = 0, n = 0;
-    const auto* data = bytes.data();
-    const int len = int(bytes.size());
-    if (hdr) {
-        std::unique_ptr<float, StbFree> px(stbi_loadf_from_memory(data, len, &w, &h, &n, 4));
-        if (!px) {
-            error = std::string("cannot decode image: ") + stbi_failure_reason();
-            return false;
-        }
-        out = Image::rgbaF32(w, h);
-        std::memcpy(out.f32.data(), px.get(), out.f32.size() * sizeof(float));
-    } else {
-        std::unique_ptr<stbi_uc, StbFree> px(stbi_load_from_memory(data, len, &w, &h, &n, 4));
-        if (!px) {
-            error = std::string("cannot decode image: ") + stbi_failure_reason();
-            return false;
-        }
-        out = Image::rgba8(w, h);
-        std::memcpy(out.u8.data(), px.get(), out.u8.size());
-    }
-    return true;
-}
-
-}  // namespace
 
 bool loadImage(const std::string& path, Image& out, std::string& error) {
     std::vector<std::uint8_t> bytes;
     if (!readFileBytes(path, bytes, error)) return false;
     bool ok = false;
-    if (startsWith(bytes, "BM", 2)) {
-        ok = decodeBmp(bytes, out, error);
-    } else if (startsWith(bytes, "#?RADIANCE", 10) || startsWith(bytes, "#?RGBE", 6)) {
-        ok = decodeStb(bytes, true, out, error);
-    } else if (startsWith(bytes, "\x89PNG", 4) || startsWith(bytes, "\xff\xd8\xff", 3)) {
-        ok = decodeStb(bytes, false, out, error);
-    } else if (endsWith(path, ".tex")) {
-        ok = decodeTex2D(bytes, out, error);
-    } else if (endsWith(path, ".hdr")) {
-        ok = decodeStb(bytes, true, out, error);
-    } else {
-        // Let stb try the formats it knows that we do not sniff (TGA, GIF, ...).
-        ok = decodeStb(bytes, false, out, error);
+    switch (sniffImage(bytes, path)) {
+    case ImageFormat::Bmp: ok = decodeBmp(bytes, out, error); break;
+    case ImageFormat::Png:
+    case ImageFormat::Jpeg: ok = decodePngJpeg(bytes, out, error); break;
+    case ImageFormat::Hdr: ok = decodeHdr(bytes, out, error); break;
+    case ImageFormat::Tex: ok = decodeTex2D(bytes, out, error); break;
+    case ImageFormat::Unknown:
+        error = "not an image Glimmer reads (BMP, PNG, JPEG, Radiance .hdr or raw .tex)";
+        break;
+    }
+    if (ok && out.empty()) {
+        ok = false;
+        error = "zero-size image";
     }
     if (!ok) error = path + ": " + error;
     return ok;

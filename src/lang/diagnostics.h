@@ -26,29 +26,51 @@ public:
     void error(const std::string& file, SourceLoc loc, std::string message);
     void warning(const std::string& file, SourceLoc loc, std::string message);
     void note(const std::string& file, SourceLoc loc, std::string message);
-    void add(Diagnostic d) { list_.push_back(std::move(d)); }
+    void add(Diagnostic d);
 
     bool hasErrors() const;
     int errorCount() const;
     int warningCount() const;
     const std::vector<Diagnostic>& all() const { return list_; }
-    void clear() { list_.clear(); }
+    void clear() {
+        list_.clear();
+        errors_ = warnings_ = 0;
+    }
 
 private:
     std::vector<Diagnostic> list_;
+    int errors_ = 0, warnings_ = 0;  // counted as they are added: asking is O(1)
 };
 
 // The text of every file a diagnostic may point into, so the printer can show
 // the offending line under the message.
+// Each text's line starts are indexed once, when it is added, so printing
+// many diagnostics costs no more than printing one each.
 class SourceTexts {
 public:
-    void add(const std::string& file, std::string text) { texts_[file] = std::move(text); }
+    void add(const std::string& file, std::string text);
     // The 1-based line of `file`, without its line ending; empty if unknown.
     std::string line(const std::string& file, int line) const;
 
 private:
-    std::map<std::string, std::string> texts_;
+    struct Text {
+        std::string text;
+        std::vector<size_t> starts;  // offset of each line's first byte
+    };
+    std::map<std::string, Text> texts_;
 };
+
+// What a diagnostic may echo of the user's text: at most this many
+// characters of a source line (a window around the caret) and of each line
+// of a message. Control characters other than tab are shown escaped (\x1b),
+// so a script cannot send terminal escapes to a grader's console.
+constexpr size_t kMaxEchoedChars = 200;
+// How many diagnostics a front end prints before "N more not shown".
+constexpr size_t kMaxPrintedDiagnostics = 100;
+
+// `text` made safe to print: control characters escaped (newlines and tabs
+// kept when `keepNewlines`), each line cut to kMaxEchoedChars characters.
+std::string sanitizeForTerminal(const std::string& text, bool keepNewlines);
 
 // clang style: "file:line:col: error: message", then the source line and a
 // caret under the column (omitted when the line is unknown).

@@ -108,6 +108,12 @@ private:
     int unitArg(const Command& c, const Arg& a);
 
     // Finds a texture file; false (reported) when it is not there.
+    // Resolves a file the script names, as glman would or, under --sandbox,
+    // only inside the sandbox. `usable`: found, or a stand-in takes its place
+    // (--stand-ins); false when the command cannot go on (reported).
+    std::string findFile(const Arg& a, const char* what, bool& usable);
+    // Counts a draw; false (reported once) past kMaxDraws.
+    bool countDraw(SourceLoc loc);
     bool textureFile(const Arg& a, std::string& path);
 
     // Binds `t` to `unit` where the command stands. Scripts re-bind the same
@@ -186,6 +192,7 @@ private:
         bool valid = true;
     };
     std::optional<Immediate> imm_;
+    size_t draws_ = 0;
 };
 
 }  // namespace plan_detail

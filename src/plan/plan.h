@@ -14,6 +14,7 @@
 
 #include "lang/diagnostics.h"
 #include "lang/script.h"
+#include "plan/limits.h"
 
 namespace glimmer {
 
@@ -141,6 +142,8 @@ struct PlanOptions {
     // --stand-ins: a missing image, cube-map face, 3-D .tex or OBJ is a warning
     // and its path stays empty; the load step makes a stand-in (assets/stand_ins.h).
     bool standIns = false;
+    std::uint64_t maxMemoryBytes = kDefaultMaxMemoryMiB << 20;  // textures and targets together (--max-memory)
+    bool sandbox = false;                  // --sandbox: files only inside the script's folder and -I folders (plan/sandbox.h)
 };
 
 // Resolves and checks a parsed script. Problems go to `diags`; the plan is

@@ -1,6 +1,8 @@
 // Walks the commands in script order, keeping glman's state (matrices,
 // colour, current shaders, texture units) and writing passes of draws.
 #include "plan/builder.h"
+#include "plan/limits.h"
+#include "plan/memory_budget.h"
 #include "geometry/planarity.h"
 #include "geometry/shape_registry.h"
 
@@ -21,13 +23,12 @@ Plan Builder::build() {
     // then the first WindowSize, then glman's 600x600.
     for (const auto& c : script_.commands) {
         if (c.kind == CommandKind::WindowSize) {
-            if (numbers(c)) {
+            // Checked before converting (1e47 does not fit an int);
+            // reported by the walk below.
+            if (c.args.size() == 2 && c.args[0].kind == Arg::Kind::Number && c.args[1].kind == Arg::Kind::Number &&
+                wholeIn(c.args[0].number, 1, 16384) && wholeIn(c.args[1].number, 1, 16384)) {
                 plan_.width = int(c.args[0].number);
                 plan_.height = int(c.args[1].number);
-                if (plan_.width < 1 || plan_.height < 1 || plan_.width > 16384 || plan_.height > 16384) {
-                    diags_.error(file(), c.loc, "WindowSize must be between 1 and 16384 pixels each way");
-                    plan_.width = plan_.height = 600;
-                }
             }
             break;
         }
@@ -59,6 +60,10 @@ bool Builder::numbers(const Command& c, size_t lo, size_t hi) {
         if (a.kind != Arg::Kind::Number) {
             diags_.error(file(), a.loc, fmt::format("{} takes numbers; '{}' is not a number", c.spelled,
                                                     a.text.empty() ? std::string("[...]") : a.text));
+            return false;
+        }
+        if (!inFloatRange(a.number)) {
+            diags_.error(file(), a.loc, fmt::format("{}: '{}' is out of range (at most 1e30 either way)", c.spelled, a.text));
             return false;
         }
     }
@@ -97,7 +102,10 @@ void Builder::command(const Command& c) {
         return;
     }
     switch (c.kind) {
-    case CommandKind::WindowSize: numbers(c); break;  // read before the walk
+    case CommandKind::WindowSize:  // read before the walk; checked here
+        if (numbers(c) && (!wholeIn(c.args[0].number, 1, 16384) || !wholeIn(c.args[1].number, 1, 16384)))
+            diags_.error(file(), c.loc, "WindowSize must be between 1 and 16384 pixels each way");
+        break;
     case CommandKind::Ortho: ortho(c); break;
     case CommandKind::Perspective:
         if (numbers(c)) {
@@ -289,7 +297,8 @@ std::set<int> Builder::drawReads(const Draw& d) const {
     if (d.program < 0) return reads;
     std::set<int> units = {0};
     for (const auto& u : plan_.programs[d.program].uniforms)
-        if (u.form == UniformSetting::Form::Constant && u.values.size() == 1) units.insert(int(u.values[0]));
+        if (u.form == UniformSetting::Form::Constant && u.values.size() == 1 && wholeIn(u.values[0], 0, 31))
+            units.insert(int(u.values[0]));
     for (int unit : units) {
         auto it = d.units.find(unit);
         if (it != d.units.end()) reads.insert(it->second);
@@ -309,13 +318,15 @@ void Builder::finish() {
     }
     plan_.passes = std::move(kept);
 
+    std::vector<char> flatMesh(plan_.meshes.size());  // once per mesh, not per draw
+    for (size_t i = 0; i < plan_.meshes.size(); ++i) flatMesh[i] = plan_.meshes[i].flat();
     for (auto& p : plan_.passes) {
         int draws = 0;
         bool solid = false;
         for (const auto& s : p.steps) {
             if (s.kind != Step::Kind::Draw) continue;
             ++draws;
-            if (!plan_.meshes[s.draw.mesh].flat()) solid = true;
+            if (!flatMesh[size_t(s.draw.mesh)]) solid = true;
             for (int t : drawReads(s.draw)) p.reads.insert(t);
         }
         // One flat quad cannot hide anything; depth only matters with more.
@@ -345,6 +356,7 @@ void Builder::finish() {
         }
         if (p->needed) wanted.insert(p->reads.begin(), p->reads.end());
     }
+    checkMemoryBudget(plan_, options_.maxMemoryBytes, diags_);
 }
 
 }  // namespace plan_detail

@@ -26,12 +26,9 @@ void Builder::stage(const Command& c, ShaderStage::Kind kind) {
     s.kind = kind;
     s.shown = c.args[0].text;
     s.loc = c.args[0].loc;
-    std::vector<std::string> tried;
-    s.path = resolveFile(file(), s.shown, options_.includeDirs, &tried);
-    if (s.path.empty()) {
-        notFound(c.args[0].loc, "shader", s.shown, tried);
-        return;
-    }
+    bool usable = false;
+    s.path = findFile(c.args[0], "shader", usable);
+    if (!usable) return;
     stages_[kind] = s;
 }
 

@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "plan/limits.h"
 #include "plan/uniform_forms.h"
 
 namespace glimmer {
@@ -23,12 +24,19 @@ void Builder::numberShape(const Command& c, const ShapeRule& rule) {
     const ShapeRule::Count& k = rule.count;
     if (k.arg >= 0 && size_t(k.arg) < c.args.size()) {
         double v = c.args[size_t(k.arg)].number;
-        if (v != std::floor(v) || v < k.lo || v > k.hi) {
+        if (!wholeIn(v, k.lo, k.hi)) {
             diags_.error(file(), c.args[size_t(k.arg)].loc,
                          fmt::format("{}'s {} must be a whole number from {} to {}", c.spelled, k.what, k.lo, k.hi));
             return;
         }
     }
+    if (rule.countsFrom >= 0)
+        for (size_t i = size_t(rule.countsFrom); i < c.args.size(); ++i)
+            if (!wholeIn(c.args[i].number, rule.countsLo, kMaxSubdivisions)) {
+                diags_.error(file(), c.args[i].loc, fmt::format("{}'s counts must be whole numbers from {} to {}; not '{}'",
+                                                                c.spelled, rule.countsLo, kMaxSubdivisions, c.args[i].text));
+                return;
+            }
     std::vector<double> written;
     for (const auto& a : c.args) written.push_back(a.number);
     mesh(c, completeShapeNumbers(rule, written));
@@ -42,8 +50,8 @@ std::optional<glm::dvec3> Builder::point(const Command& c, const Arg& a) {
         return std::nullopt;
     }
     for (const auto& i : a.items)
-        if (i.kind != Arg::Kind::Number) {
-            diags_.error(file(), i.loc, fmt::format("{} takes numbers; '{}' is not a number", c.spelled, i.text));
+        if (i.kind != Arg::Kind::Number || !inFloatRange(i.number)) {
+            diags_.error(file(), i.loc, fmt::format("{} takes numbers of at most 1e30; '{}' is not one", c.spelled, i.text));
             return std::nullopt;
         }
     return glm::dvec3(a.items[0].number, a.items[1].number, a.items.size() > 2 ? a.items[2].number : 0.0);
@@ -119,6 +127,7 @@ void Builder::glEnd(const Command* end) {
         diags_.warning(file(), b.step.draw.loc, "glBegin ... glEnd with no glVertex draws nothing");
         return;
     }
+    if (!countDraw(b.step.draw.loc)) return;
     MeshDecl m;
     m.shape = CommandKind::GlBegin;
     m.params = {double(int(b.primitive))};
@@ -133,9 +142,9 @@ void Builder::obj(const Command& c) {
         diags_.error(file(), c.loc, fmt::format("{} takes one .obj file name", c.spelled));
         return;
     }
-    std::vector<std::string> tried;
-    std::string path = resolveFile(file(), c.args[0].text, options_.includeDirs, &tried);
-    if (path.empty() && !notFound(c.args[0].loc, "model", c.args[0].text, tried)) return;
+    bool usable = false;
+    std::string path = findFile(c.args[0], "model", usable);
+    if (!usable) return;
     mesh(c, {}, path);
 }
 
@@ -145,7 +154,16 @@ int Builder::meshIndex(const MeshDecl& m) {
     return it->second;
 }
 
+// Counts a draw; false (reported once) past kMaxDraws.
+bool Builder::countDraw(SourceLoc loc) {
+    if (++draws_ <= kMaxDraws) return true;
+    if (draws_ == kMaxDraws + 1)
+        diags_.error(file(), loc, fmt::format("more than {} draws; this one and those after it are not drawn", kMaxDraws));
+    return false;
+}
+
 void Builder::mesh(const Command& c, std::vector<double> params, const std::string& path, std::vector<double> points) {
+    if (!countDraw(c.loc)) return;
     MeshDecl m;
     m.shape = c.kind;
     m.params = std::move(params);

@@ -10,6 +10,8 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "plan/limits.h"
+#include "plan/sandbox.h"
 #include "plan/uniform_forms.h"
 
 namespace glimmer {
@@ -37,9 +39,29 @@ int Builder::unitArg(const Command& c, const Arg& a) {
 
 // Finds a texture file; false (reported) when it is not there.
 bool Builder::textureFile(const Arg& a, std::string& path) {
+    bool usable = false;
+    path = findFile(a, "texture", usable);
+    return usable;
+}
+
+std::string Builder::findFile(const Arg& a, const char* what, bool& usable) {
     std::vector<std::string> tried;
-    path = resolveFile(file(), a.text, options_.includeDirs, &tried);
-    return !path.empty() || notFound(a.loc, "texture", a.text, tried);
+    usable = false;
+    if (!options_.sandbox) {
+        std::string path = resolveFile(file(), a.text, options_.includeDirs, &tried);
+        usable = !path.empty() || notFound(a.loc, what, a.text, tried);
+        return path;
+    }
+    std::string path, why;
+    switch (resolveSandboxed(file(), a.text, options_.includeDirs, path, tried, why)) {
+    case SandboxLookup::Found: usable = true; return path;
+    case SandboxLookup::NotFound: usable = notFound(a.loc, what, a.text, tried); break;
+    case SandboxLookup::Outside:
+        diags_.error(file(), a.loc, fmt::format("{} '{}' is outside the sandbox ({}); --sandbox reads only files "
+                                                "in the script's folder and -I folders", what, a.text, why));
+        break;
+    }
+    return {};
 }
 
 // Binds `t` to `unit` where the command stands. Scripts re-bind the same
@@ -210,6 +232,12 @@ bool Builder::notFound(SourceLoc loc, const char* what, const std::string& name,
 }
 
 void Builder::renderToTexture(const Command& c) {
+    if (plan_.passes.size() > kMaxPasses) {
+        if (plan_.passes.size() == kMaxPasses + 1)
+            diags_.error(file(), c.loc, fmt::format("more than {} RenderToTexture passes", kMaxPasses));
+        plan_.passes.push_back(Pass{});  // counted once, drawn never
+        return;
+    }
     Pass p;
     p.loc = c.loc;
     for (const auto& a : c.args) {

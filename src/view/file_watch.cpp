@@ -2,9 +2,13 @@
 
 #include <fstream>
 
+#include "util/read_file.h"
+
 namespace glimmer {
 
 std::optional<std::uint64_t> hashFile(const std::string& path) {
+    std::string why;
+    if (!checkRegularFile(path, why)) return std::nullopt;  // never block on a FIFO or read a device
     std::ifstream f(path, std::ios::binary);
     if (!f) return std::nullopt;
     std::uint64_t h = 1469598103934665603ull;

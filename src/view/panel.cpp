@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 #include <imgui.h>
 
+#include "plan/limits.h"
 #include "view/viewer.h"
 
 namespace glimmer {
@@ -30,8 +31,8 @@ void programGroup(ViewerState& s, int p, bool firstOpen) {
             switch (u.form) {
             case UniformSetting::Form::Range:
                 if (isIntType(*s.renderer, p, u.name)) {
-                    int i = int(v[0]);
-                    changed = ImGui::SliderInt(u.name.c_str(), &i, int(u.min), int(u.max));
+                    int i = clampToInt(v[0]);
+                    changed = ImGui::SliderInt(u.name.c_str(), &i, clampToInt(u.min), clampToInt(u.max));
                     v[0] = i;
                 } else {
                     float f = float(v[0]);

@@ -59,6 +59,7 @@ public:
         request.script = options_.script;
         request.plan.includeDirs = options_.includeDirs;
         request.plan.standIns = options_.standIns;
+        request.plan.sandbox = options_.sandbox;
         request.plan.width = w;
         request.plan.height = h;
         // Every target can be looked at in the pass inspector, so every pass

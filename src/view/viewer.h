@@ -27,6 +27,7 @@ struct ViewOptions {
     std::string exec;  // commands separated by ';'
     bool readStdin = true;
     bool standIns = true;  // missing images and models are replaced (assets/stand_ins.h)
+    bool sandbox = false;  // --sandbox
 };
 
 int runView(const ViewOptions& options);

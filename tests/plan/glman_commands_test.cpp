@@ -60,7 +60,7 @@ TEST_F(GlmanPlanTest, ShapeArgumentErrors) {
     Planned p = run("Cone 1 1 2\nTeapot 1 0\nPointCloud 0\nTriangles [0 0 0] [1 0 0]\nTriangles [0 0 0] 4 [1 1 1]\n");
     EXPECT_EQ(messages(p.diags),
               (V{"1:10: error: Cone's slices must be a whole number from 3 to 1000",
-                 "2:10: error: Teapot's subdivisions must be a whole number from 1 to 1000",
+                 "2:10: error: Teapot's subdivisions must be a whole number from 1 to 300",
                  "3:12: error: PointCloud's count must be a whole number from 1 to 1000000",
                  "4:1: error: Triangles needs 3 points [x y z], got 2",
                  "5:19: error: Triangles takes points written [x y z]; '4' is not one"}));

@@ -224,3 +224,45 @@ TEST(MapCompilerLog, EmptyLogSaysNothing) {
 
 }  // namespace
 }  // namespace glimmer
+
+namespace glimmer {
+namespace {
+
+// std::regex recursed per character and overflowed the stack on long log
+// lines; the hand parser is linear.
+TEST(MapCompilerLog, HugeLinesParseWithoutRecursion) {
+    const std::string huge(2000000, 'x');
+    Diagnostics d;
+    mapCompilerLog("0:3(7): error: " + huge + "\n" + huge + "\n", PreparedSource{}, "s.frag", "a.glib", {9, 1},
+                   Severity::Error, d);
+    ASSERT_EQ(d.all().size(), 2u);
+    EXPECT_EQ(d.all()[0].loc.line, 3);
+    EXPECT_EQ(d.all()[0].loc.col, 7);
+    EXPECT_EQ(d.all()[0].message, huge);
+    EXPECT_EQ(d.all()[1].file, "a.glib");
+    EXPECT_EQ(d.all()[1].message, huge);
+}
+
+TEST(MapCompilerLog, LineNumbersBeyondIntAreClampedNotThrown) {
+    Diagnostics d;
+    mapCompilerLog("0:99999999999999999999(1): error: far\n0(88888888888888888) : warning C7: nv\n", PreparedSource{},
+                   "s.frag", "a.glib", {}, Severity::Error, d);
+    ASSERT_EQ(d.all().size(), 2u);
+    EXPECT_EQ(d.all()[0].loc.line, 2147483647);
+    EXPECT_EQ(d.all()[1].loc.line, 2147483647);
+    EXPECT_EQ(d.all()[1].message, "nv");
+}
+
+TEST(MapCompilerLog, PreprocessorWordNeedsASpaceAfterIt) {
+    Diagnostics d;
+    mapCompilerLog("0:1(2): preprocessorerror: x\n0:1(2): preprocessor warning: y\n", PreparedSource{}, "s", "f", {},
+                   Severity::Error, d);
+    ASSERT_EQ(d.all().size(), 2u);
+    EXPECT_EQ(d.all()[0].file, "s");
+    EXPECT_EQ(d.all()[0].severity, Severity::Warning);
+    EXPECT_EQ(d.all()[0].message, "y");
+    EXPECT_EQ(d.all()[1].file, "f");  // the first line matched neither form
+}
+
+}  // namespace
+}  // namespace glimmer

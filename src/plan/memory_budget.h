@@ -1,0 +1,21 @@
+// --max-memory: what the textures and render targets a plan declares will
+// take, checked before anything is allocated.
+#pragma once
+#include <cstdint>
+
+#include "lang/diagnostics.h"
+#include "plan/plan.h"
+
+namespace glimmer {
+
+// Bytes one texture takes on the GPU: empty 2-D textures and targets in
+// their format (a third more with mips, 4 bytes a texel more with depth),
+// empty 3-D textures as RGBA8. Image files count 0 here: each is bounded by
+// the image limits (image/sniff.h) when it is read.
+std::uint64_t textureBytes(const TextureDecl& t);
+
+// Adds up the screen and every texture in script order; the first texture
+// that takes the total past `budget` is an error on its line.
+void checkMemoryBudget(const Plan& plan, std::uint64_t budget, Diagnostics& diags);
+
+}  // namespace glimmer
