@@ -12,6 +12,7 @@ packages=(
   libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev libtinyexr-dev libpng-dev
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
+  x11-apps                            # xwd: the viewer test reads the X screen back
 )
 # Update the package lists only when a package is missing: a second run
 # should not touch the network.
