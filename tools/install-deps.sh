@@ -13,6 +13,7 @@ packages=(
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
   clang-14 libclang-rt-14-dev         # libFuzzer targets and sanitizers (tools/fuzz-ci.sh)
+  x11-apps                            # xwd: the viewer test reads the X screen back
 )
 # Update the package lists only when a package is missing: a second run
 # should not touch the network.

@@ -14,7 +14,8 @@ namespace glimmer_viewer {
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
 
-ViewerProcess::ViewerProcess(const std::vector<std::string>& args, const fs::path& workDir) {
+ViewerProcess::ViewerProcess(const std::vector<std::string>& args, const fs::path& workDir,
+                             const std::string& display) {
     // The viewer may quit on its own (--exec ... quit); a later write to its
     // stdin must fail quietly, not kill the test.
     ::signal(SIGPIPE, SIG_IGN);
@@ -24,6 +25,7 @@ ViewerProcess::ViewerProcess(const std::vector<std::string>& args, const fs::pat
     int pipeFds[2];
     if (::pipe(pipeFds) != 0) return;
     std::vector<std::string> argv = {"xvfb-run", "-a", "-s", "-screen 0 1024x768x24", GLIMMER_BIN, "view"};
+    if (!display.empty()) argv = {GLIMMER_BIN, "view"};
     argv.insert(argv.end(), args.begin(), args.end());
     pid_ = ::fork();
     if (pid_ == 0) {
@@ -34,6 +36,7 @@ ViewerProcess::ViewerProcess(const std::vector<std::string>& args, const fs::pat
         ::dup2(log, 2);
         ::close(pipeFds[1]);
         if (::chdir(workDir.c_str()) != 0) ::_exit(126);
+        if (!display.empty()) ::setenv("DISPLAY", display.c_str(), 1);
         std::vector<char*> cargs;
         for (auto& a : argv) cargs.push_back(a.data());
         cargs.push_back(nullptr);

@@ -11,8 +11,10 @@ namespace glimmer_viewer {
 
 class ViewerProcess {
 public:
-    // Starts `glimmer view` with `args` (after "view") in `workDir`.
-    ViewerProcess(const std::vector<std::string>& args, const std::filesystem::path& workDir);
+    // Starts `glimmer view` with `args` (after "view") in `workDir`, under
+    // an X server of its own (xvfb-run), or on `display` (":N") when given.
+    ViewerProcess(const std::vector<std::string>& args, const std::filesystem::path& workDir,
+                  const std::string& display = {});
     ~ViewerProcess();  // quits, or kills the whole process group after a grace period
     ViewerProcess(const ViewerProcess&) = delete;
     ViewerProcess& operator=(const ViewerProcess&) = delete;
@@ -25,7 +27,7 @@ public:
     int quit(std::chrono::seconds timeout = std::chrono::seconds(20));
 
 private:
-    int pid_ = -1;
+    int pid_ = -1;  // the leader of a process group of its own
     int stdinFd_ = -1;
     std::filesystem::path logPath_;
     bool exited_ = false;
