@@ -12,6 +12,8 @@ packages=(
   libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev libtinyexr-dev libpng-dev
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
+  xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
+  fonts-dejavu-core                   # glimmer view's panel font (a TTF, crisp at any --ui-scale)
 )
 # Update the package lists only when a package is missing: a second run
 # should not touch the network.

@@ -45,6 +45,8 @@ void addViewCommand(CLI::App& app, ViewOptions& o) {
     sub->add_option("--exec", o.exec, "commands to run, separated by ';': set NAME VALUE, reload, save FILE.png, "
                                       "show UNIT|screen, quit");
     sub->add_flag("!--no-stdin", o.readStdin, "do not read commands from standard input");
+    sub->add_option("--ui-scale", o.uiScale, "size of the panel's text and controls, 0.5 to 4 (default: the "
+                                             "monitor's content scale, else 1)");
 }
 
 }  // namespace glimmer
