@@ -71,11 +71,12 @@ void control(ViewerState& s, const UniformControl& c) {
     }
 }
 
-bool hasSlider(const ProgramDecl& decl) {
-    for (const auto& u : decl.uniforms)
-        if (u.form == UniformSetting::Form::Range || u.form == UniformSetting::Form::Bool ||
-            u.form == UniformSetting::Form::Color)
+bool hasSlider(const std::vector<const UniformControl*>& controls) {
+    for (const auto* c : controls) {
+        auto f = c->setting->form;
+        if (f == UniformSetting::Form::Range || f == UniformSetting::Form::Bool || f == UniformSetting::Form::Color)
             return true;
+    }
     return false;
 }
 
@@ -93,9 +94,12 @@ void controls(ViewerState& s) {
         if (mergedAway) continue;  // every uniform it has is a control of an earlier group
         ImGui::PushID(int(p));
         std::string header = fmt::format("{}  (line {})###program", decl.name, decl.loc.line);
-        if (ImGui::CollapsingHeader(header.c_str(), hasSlider(decl) ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+        // Open when it has a slider of its own (a merged one lives in the
+        // first Program's group).
+        bool sliders = hasSlider(mine);
+        if (ImGui::CollapsingHeader(header.c_str(), sliders ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
             for (const auto* c : mine) control(s, *c);
-            if (ImGui::Button("Reset")) {
+            if (sliders && ImGui::Button("Reset")) {
                 for (const auto* c : mine)
                     for (int q : c->programs) s.values->set(q, c->name, c->setting->values);
             }
@@ -262,7 +266,7 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
         for (size_t i = 0; i < thumbnails.size(); ++i) {
             const auto& [tex, name] = thumbnails[i];
             if (!name) continue;
-            if (i > 0) ImGui::SameLine();
+            if (i % 5 != 0) ImGui::SameLine();  // five to a row
             ImGui::BeginGroup();
             ImGui::PushID(tex);
             // Flipped: OpenGL's row 0 is the bottom.
@@ -284,9 +288,13 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
         ImGui::Checkbox("Probe (hover the picture)", &s.probe);
         if (!s.probeText.empty()) ImGui::TextUnformatted(s.probeText.c_str());
 
-        ImGui::Text("frame %.1f ms", s.lastFrameMs);
-        for (const auto& t : s.lastTimings)
-            ImGui::Text("  %s: %.2f ms", passName(plan, t.pass).c_str(), t.ms);
+        // Timings fold away, so the sliders stay near the top.
+        std::string timings = fmt::format("frame {:.1f} ms, {} pass{}###timings", s.lastFrameMs, s.lastTimings.size(),
+                                          s.lastTimings.size() == 1 ? "" : "es");
+        if (ImGui::TreeNode(timings.c_str())) {
+            for (const auto& t : s.lastTimings) ImGui::Text("%s: %.2f ms", passName(plan, t.pass).c_str(), t.ms);
+            ImGui::TreePop();
+        }
         // A warning badge for any target holding NaN, Inf, negatives or
         // values past the half-float range (see render --health).
         for (const auto& h : s.health) {
