@@ -14,6 +14,8 @@ packages=(
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
   clang-14 libclang-rt-14-dev         # libFuzzer targets and sanitizers (tools/fuzz-ci.sh)
   x11-apps                            # xwd: the viewer test reads the X screen back
+  xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
+  fonts-dejavu-core                   # glimmer view's panel font (a TTF, crisp at any --ui-scale)
 )
 # Update the package lists only when a package is missing: a second run
 # should not touch the network.

@@ -51,6 +51,8 @@ void addViewCommand(CLI::App& app, ViewOptions& o) {
     sub->add_flag("--stand-ins,!--no-stand-ins", o.standIns, "replace missing images and models by stand-ins, with a "
                                                             "warning (the default in view); --no-stand-ins: an error");
     sub->add_flag("--sandbox", o.sandbox, "read only files inside the script's folder and -I folders");
+    sub->add_option("--ui-scale", o.uiScale, "size of the panel's text and controls, 0.5 to 4 (default: the "
+                                             "monitor's content scale, else 1)");
 }
 
 }  // namespace glimmer

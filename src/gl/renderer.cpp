@@ -289,22 +289,34 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
 }
 
 void Renderer::present(int texture, int windowWidth, int windowHeight) const {
+    presentIn(texture, windowHeight, 0, 0, windowWidth, windowHeight);
+}
+
+void Renderer::presentIn(int texture, int windowHeight, int rx, int ry, int rw, int rh, float u0, float u1) const {
     const Target* source = screen_.get();
     if (texture >= 0) {
         source = nullptr;
         for (const auto& t : targets_)
             if (t->textures.front() == texture) source = t.get();
     }
-    if (!source || windowWidth <= 0 || windowHeight <= 0) return;
-    // Fit inside the window keeping the picture's shape.
-    double scale = std::min(double(windowWidth) / source->width, double(windowHeight) / source->height);
+    if (!source || rw <= 0 || rh <= 0 || !(u1 > u0)) return;
+    // Fit inside the rectangle keeping the picture's shape.
+    double scale = std::min(double(rw) / source->width, double(rh) / source->height);
     int w = int(source->width * scale), h = int(source->height * scale);
-    int x = (windowWidth - w) / 2, y = (windowHeight - h) / 2;
+    int x = rx + (rw - w) / 2, y = (windowHeight - ry - rh) + (rh - h) / 2;
+    int sx0 = int(std::lround(u0 * source->width)), sx1 = int(std::lround(u1 * source->width));
+    int dx0 = x + int(std::lround(u0 * w)), dx1 = x + int(std::lround(u1 * w));
     gl_->BindFramebuffer(GL_READ_FRAMEBUFFER, source->fbo);
     gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
     gl_->BindFramebuffer(GL_DRAW_FRAMEBUFFER, 0);
-    gl_->BlitFramebuffer(0, 0, source->width, source->height, x, y, x + w, y + h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    gl_->BlitFramebuffer(sx0, 0, sx1, source->height, dx0, y, dx1, y + h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
     gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+unsigned Renderer::textureName(int texture) const {
+    if (texture < 0) return screenTexture_;
+    if (size_t(texture) >= textures_.size()) return 0;
+    return textures_[size_t(texture)].id;
 }
 
 Renderer::UniformKind Renderer::uniformKind(int program, const std::string& name) const {

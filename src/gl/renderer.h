@@ -56,6 +56,14 @@ public:
     // Copies the screen (texture < 0) or a texture target to the window's
     // framebuffer 0, scaled to fit inside w x h and centred.
     void present(int texture, int windowWidth, int windowHeight) const;
+    // The same into the rectangle x, y (top left, window pixels, y down), w x h
+    // of a window `windowHeight` tall, fitted and centred in it; only the
+    // columns from fraction u0 to u1 of the fitted picture are drawn (a
+    // before/after split draws two textures side by side this way).
+    void presentIn(int texture, int windowHeight, int x, int y, int w, int h, float u0 = 0.f, float u1 = 1.f) const;
+    // The GL name of a render target's texture (the screen for -1), for ImGui's
+    // own OpenGL backend to draw a thumbnail; 0 when it was not made.
+    unsigned textureName(int texture) const;
 
     // What a linked program declares `name` as, for a slider of the right
     // kind; Unknown when the program was not built or does not use it.

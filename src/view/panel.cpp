@@ -1,13 +1,20 @@
-// The Dear ImGui panel: a group of controls per Program, as glman had, plus
-// the viewer's own buttons and readouts.
+// The Dear ImGui panel, docked beside the picture: errors first, then the
+// viewer's buttons and readouts, then a group of controls per Program, as
+// glman had (uniforms of the same name in several Programs are one control).
+#include <filesystem>
+#include <iostream>
+
 #include <fmt/format.h>
 #include <imgui.h>
 
 #include "plan/limits.h"
+#include "view/view_model.h"
 #include "view/viewer.h"
 
 namespace glimmer {
 namespace {
+
+ImFont* gMono = nullptr;  // DejaVu Sans Mono: messages with a caret under a column
 
 bool isIntType(const Renderer& r, int program, const std::string& name) {
     return r.uniformKind(program, name) == Renderer::UniformKind::Int;
@@ -19,98 +26,218 @@ std::string valuesText(const std::vector<double>& v) {
     return s;
 }
 
-// One Program's controls. Returns true when a value changed.
-void programGroup(ViewerState& s, int p, bool firstOpen) {
-    const ProgramDecl& decl = s.good->plan.programs[size_t(p)];
-    ImGui::PushID(p);
-    if (ImGui::CollapsingHeader(decl.name.c_str(), firstOpen ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
-        for (const auto& u : decl.uniforms) {
-            std::vector<double> v = s.values->get(p, u.name);
-            if (v.empty()) continue;
-            bool changed = false;
-            switch (u.form) {
-            case UniformSetting::Form::Range:
-                if (isIntType(*s.renderer, p, u.name)) {
-                    int i = clampToInt(v[0]);
-                    changed = ImGui::SliderInt(u.name.c_str(), &i, clampToInt(u.min), clampToInt(u.max));
-                    v[0] = i;
-                } else {
-                    float f = float(v[0]);
-                    changed = ImGui::SliderFloat(u.name.c_str(), &f, float(u.min), float(u.max));
-                    v[0] = f;
-                }
-                break;
-            case UniformSetting::Form::Bool: {
-                bool b = v[0] != 0;
-                changed = ImGui::Checkbox(u.name.c_str(), &b);
-                v[0] = b ? 1 : 0;
-                break;
-            }
-            case UniformSetting::Form::Color: {
-                float c[4] = {float(v[0]), float(v[1]), float(v[2]), float(v[3])};
-                changed = ImGui::ColorEdit4(u.name.c_str(), c);
-                v = {c[0], c[1], c[2], c[3]};
-                break;
-            }
-            case UniformSetting::Form::Array:
-            case UniformSetting::Form::Constant:
-                ImGui::TextDisabled("%s = %s", u.name.c_str(), valuesText(v).c_str());
-                break;
-            }
-            if (changed) s.values->set(p, u.name, v);
+// One control: a slider, checkbox or colour that sets the uniform in every
+// Program it stands for. Constants and arrays are shown read-only.
+void control(ViewerState& s, const UniformControl& c) {
+    const UniformSetting& u = *c.setting;
+    int p = c.programs.front();
+    std::vector<double> v = s.values->get(p, u.name);
+    if (v.empty()) return;
+    std::string label = c.label();
+    bool changed = false;
+    switch (u.form) {
+    case UniformSetting::Form::Range:
+        if (isIntType(*s.renderer, p, u.name)) {
+            int i = clampToInt(v[0]);
+            changed = ImGui::SliderInt(label.c_str(), &i, clampToInt(u.min), clampToInt(u.max));
+            v[0] = i;
+        } else {
+            float f = float(v[0]);
+            changed = ImGui::SliderFloat(label.c_str(), &f, float(u.min), float(u.max));
+            v[0] = f;
         }
-        if (ImGui::Button("Reset")) {
-            for (const auto& u : decl.uniforms) s.values->set(p, u.name, u.values);
+        break;
+    case UniformSetting::Form::Bool: {
+        bool b = v[0] != 0;
+        changed = ImGui::Checkbox(label.c_str(), &b);
+        v[0] = b ? 1 : 0;
+        break;
+    }
+    case UniformSetting::Form::Color: {
+        float col[4] = {float(v[0]), float(v[1]), float(v[2]), float(v[3])};
+        changed = ImGui::ColorEdit4(label.c_str(), col);
+        v = {col[0], col[1], col[2], col[3]};
+        break;
+    }
+    case UniformSetting::Form::Array:
+    case UniformSetting::Form::Constant:
+        ImGui::TextDisabled("%s = %s", u.name.c_str(), valuesText(v).c_str());
+        break;
+    }
+    if (changed)
+        for (int q : c.programs) s.values->set(q, u.name, v);
+    if (c.programs.size() > 1 && ImGui::BeginPopupContextItem(label.c_str())) {
+        if (ImGui::MenuItem("Split per pass")) s.splitUniforms.push_back(u.name);
+        ImGui::EndPopup();
+    }
+}
+
+bool hasSlider(const std::vector<const UniformControl*>& controls) {
+    for (const auto* c : controls) {
+        auto f = c->setting->form;
+        if (f == UniformSetting::Form::Range || f == UniformSetting::Form::Bool || f == UniformSetting::Form::Color)
+            return true;
+    }
+    return false;
+}
+
+// The controls, grouped under the first Program each belongs to. Every group
+// with a slider starts open.
+void controls(ViewerState& s) {
+    const Plan& plan = s.good->plan;
+    auto all = mergedUniforms(plan, s.splitUniforms);
+    for (size_t p = 0; p < plan.programs.size(); ++p) {
+        const ProgramDecl& decl = plan.programs[p];
+        std::vector<const UniformControl*> mine;
+        for (const auto& c : all)
+            if (c.programs.front() == int(p)) mine.push_back(&c);
+        bool mergedAway = mine.empty() && !decl.uniforms.empty();
+        if (mergedAway) continue;  // every uniform it has is a control of an earlier group
+        ImGui::PushID(int(p));
+        std::string header = fmt::format("{}  (line {})###program", decl.name, decl.loc.line);
+        // Open when it has a slider of its own (a merged one lives in the
+        // first Program's group).
+        bool sliders = hasSlider(mine);
+        if (ImGui::CollapsingHeader(header.c_str(), sliders ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+            for (const auto* c : mine) control(s, *c);
+            if (sliders && ImGui::Button("Reset")) {
+                for (const auto* c : mine)
+                    for (int q : c->programs) s.values->set(q, c->name, c->setting->values);
+            }
+        }
+        ImGui::PopID();
+    }
+    if (!s.splitUniforms.empty() && ImGui::SmallButton("Merge same-name uniforms again")) s.splitUniforms.clear();
+}
+
+// Errors first, each a line to click (copies file:line); the full message
+// in a monospace font so the caret sits under its column. Warnings fold
+// into a count.
+void messages(ViewerState& s) {
+    if (s.failed) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+        ImGui::TextUnformatted(fmt::format("{} error{}: showing the last picture that worked", s.errors.size(),
+                                           s.errors.size() == 1 ? "" : "s")
+                                   .c_str());
+        ImGui::PopStyleColor();
+        for (size_t i = 0; i < s.errors.size(); ++i) {
+            ImGui::PushID(int(i));
+            if (gMono) ImGui::PushFont(gMono);
+            ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.55f, 0.5f, 1.f));
+            if (ImGui::Selectable(s.errors[i].text.c_str())) {
+                ImGui::SetClipboardText(s.errors[i].where.c_str());
+                s.status = "copied " + s.errors[i].where;
+            }
+            ImGui::PopStyleColor();
+            if (gMono) ImGui::PopFont();
+            if (ImGui::IsItemHovered()) ImGui::SetTooltip("click to copy %s", s.errors[i].where.c_str());
+            ImGui::PopID();
         }
     }
-    ImGui::PopID();
+    if (!s.warnings.empty()) {
+        std::string label = fmt::format("{} warning{}###warnings", s.warnings.size(), s.warnings.size() == 1 ? "" : "s");
+        if (ImGui::TreeNode(label.c_str())) {
+            if (gMono) ImGui::PushFont(gMono);
+            for (const auto& w : s.warnings) ImGui::TextColored(ImVec4(1.f, 0.8f, 0.35f, 1.f), "%s", w.text.c_str());
+            if (gMono) ImGui::PopFont();
+            ImGui::TreePop();
+        }
+    }
+}
+
+std::string targetName(const Plan& plan, int tex) {
+    if (tex < 0) return "screen";
+    for (const auto& [unit, t] : plan.finalUnits)
+        if (t == tex) return fmt::format("unit {}", unit);
+    return fmt::format("texture {}", tex);
+}
+
+bool targetCombo(const char* label, const Plan& plan, const std::vector<std::pair<int, unsigned>>& targets, int& shown) {
+    bool changed = false;
+    if (ImGui::BeginCombo(label, targetName(plan, shown).c_str())) {
+        if (ImGui::Selectable("screen", shown < 0)) shown = -1, changed = true;
+        for (const auto& [tex, name] : targets)
+            if (ImGui::Selectable(targetName(plan, tex).c_str(), shown == tex)) shown = tex, changed = true;
+        ImGui::EndCombo();
+    }
+    return changed;
 }
 
 }  // namespace
 
+void setUpFonts(float scale) {
+    ImGuiIO& io = ImGui::GetIO();
+    const char* dirs[] = {"/usr/share/fonts/truetype/dejavu/", "/usr/share/fonts/dejavu/", "/usr/share/fonts/TTF/",
+                          "/usr/local/share/fonts/", "/usr/share/fonts/truetype/"};
+    auto find = [&](const char* file) -> std::string {
+        for (const char* d : dirs) {
+            std::error_code ec;
+            if (std::filesystem::exists(std::string(d) + file, ec)) return std::string(d) + file;
+        }
+        return {};
+    };
+    std::string sans = find("DejaVuSans.ttf"), mono = find("DejaVuSansMono.ttf");
+    float px = std::round(15.f * scale);
+    ImFontConfig cfg;
+    cfg.OversampleH = 2;  // rasterised at the size it is shown: crisp, not a blown-up bitmap
+    if (!sans.empty() && io.Fonts->AddFontFromFileTTF(sans.c_str(), px, &cfg)) {
+        std::cerr << fmt::format("glimmer view: font {} at {:g} px\n", sans, px);
+    } else {
+        std::cerr << "glimmer view: warning: DejaVu Sans not found (install fonts-dejavu-core); using ImGui's "
+                     "built-in font\n";
+        ImFontConfig def;
+        def.SizePixels = std::round(13.f * scale);
+        io.Fonts->AddFontDefault(&def);
+    }
+    gMono = !mono.empty() ? io.Fonts->AddFontFromFileTTF(mono.c_str(), std::round(14.f * scale), &cfg) : nullptr;
+    ImGui::GetStyle().ScaleAllSizes(scale);
+}
+
 std::string overlayText(const ViewerState& s) {
     if (!s.good || !s.values) return {};
     std::string text;
-    for (size_t p = 0; p < s.good->plan.programs.size(); ++p)
-        for (const auto& u : s.good->plan.programs[p].uniforms)
-            if (u.form == UniformSetting::Form::Range || u.form == UniformSetting::Form::Bool ||
-                u.form == UniformSetting::Form::Color)
-                text += fmt::format("{}{} = {}", text.empty() ? "" : "\n", u.name, valuesText(s.values->get(int(p), u.name)));
+    for (const auto& c : mergedUniforms(s.good->plan, s.splitUniforms)) {
+        auto f = c.setting->form;
+        if (f != UniformSetting::Form::Range && f != UniformSetting::Form::Bool && f != UniformSetting::Form::Color) continue;
+        text += fmt::format("{}{} = {}", text.empty() ? "" : "\n", c.label(), valuesText(s.values->get(c.programs.front(), c.name)));
+    }
     return text;
 }
 
-std::vector<ViewCommand> drawPanel(ViewerState& s) {
+std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<int, unsigned>>& thumbnails) {
     std::vector<ViewCommand> asked;
-    ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(340, 0), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowBgAlpha(0.85f);
-    ImGui::Begin("Glimmer");
+    float em = ImGui::GetFontSize();
+    ImGui::PushItemWidth(em * 11);  // a fixed width: the panel's width follows its content
+    ImGui::PushTextWrapPos(em * 30);
     if (s.good) ImGui::TextUnformatted(s.good->plan.scriptFile.c_str());
-    if (!s.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
-        ImGui::TextWrapped("%s", s.error.c_str());
-        ImGui::PopStyleColor();
-        ImGui::TextDisabled("showing the last picture that worked");
-    }
+    messages(s);
     auto command = [](ViewCommand::Kind kind, std::string file = {}) {
         ViewCommand c;
         c.kind = kind;
         c.name = std::move(file);
         return c;
     };
-    if (ImGui::Button("Reload")) asked.push_back(command(ViewCommand::Kind::Reload));
+    if (ImGui::Button("Reload (R)")) asked.push_back(command(ViewCommand::Kind::Reload));
     ImGui::SameLine();
-    if (ImGui::Button("Save PNG (S)")) asked.push_back(command(ViewCommand::Kind::Save, "glimmer.png"));
+    if (ImGui::Button("Save PNG (S)")) asked.push_back(command(ViewCommand::Kind::Save));  // a new name each time
     ImGui::SameLine();
     ImGui::Checkbox("Show values", &s.showValues);
-    ImGui::InputInt2("size", s.hardcopy);
+    ImGui::SetNextItemWidth(em * 8);
+    int before[2] = {s.hardcopy[0], s.hardcopy[1]};
+    if (ImGui::InputInt2("##size", s.hardcopy) && s.hardcopyAspect && s.pictureW > 0) {
+        // Keep the picture's aspect: the other side follows the one typed.
+        if (s.hardcopy[0] != before[0]) s.hardcopy[1] = std::max(1, int(std::lround(double(s.hardcopy[0]) * s.pictureH / s.pictureW)));
+        else if (s.hardcopy[1] != before[1]) s.hardcopy[0] = std::max(1, int(std::lround(double(s.hardcopy[1]) * s.pictureW / s.pictureH)));
+    }
+    ImGui::SameLine();
+    ImGui::Checkbox("aspect", &s.hardcopyAspect);
     ImGui::SameLine();
     if (ImGui::Button("Save at size")) {
-        ViewCommand c = command(ViewCommand::Kind::Save, "glimmer-hardcopy.png");
+        ViewCommand c = command(ViewCommand::Kind::Save, nextFreeName("glimmer-hardcopy", ".png"));
         c.unit = -2;  // marks a hardcopy at s.hardcopy
         asked.push_back(c);
     }
-    if (ImGui::Button(s.playing ? "Pause" : "Play")) s.playing = !s.playing;
+    if (ImGui::Button(s.playing ? "Pause (space)" : "Play (space)")) s.playing = !s.playing;
     ImGui::SameLine();
     if (ImGui::Button("Step")) {
         s.playing = false;
@@ -118,31 +245,56 @@ std::vector<ViewCommand> drawPanel(ViewerState& s) {
     }
     ImGui::SameLine();
     ImGui::Text("t = %.2f s", s.time);
-    if (ImGui::Button("Reset view")) {
-        s.yaw = s.pitch = 0;
-        s.zoom = 1;
-        s.sceneMoved = true;
+    if (s.turns) {
+        if (ImGui::Button("Reset view (0)")) {
+            s.yaw = s.pitch = 0;
+            s.zoom = 1;
+            s.sceneMoved = true;
+        }
+        ImGui::SameLine();
+        ImGui::TextDisabled("drag: turn, wheel: zoom");
+    } else {
+        ImGui::TextDisabled("a flat picture: the mouse does not turn it");
     }
-    ImGui::SameLine();
-    ImGui::TextDisabled("drag: rotate, wheel: zoom");
+    ImGui::TextDisabled("H hides this panel, F fullscreen, Q quits");
 
     if (s.good) {
-        // The pass inspector: any render target full-window.
-        std::string current = s.shownTexture < 0 ? "screen" : fmt::format("texture {}", s.shownTexture);
-        if (ImGui::BeginCombo("show", current.c_str())) {
-            if (ImGui::Selectable("screen", s.shownTexture < 0)) s.shownTexture = -1;
-            for (const auto& [unit, tex] : s.good->plan.finalUnits) {
-                if (!s.good->plan.textures[size_t(tex)].renderTarget) continue;
-                std::string label = fmt::format("unit {} (target)", unit);
-                if (ImGui::Selectable(label.c_str(), s.shownTexture == tex)) s.shownTexture = tex;
-            }
-            ImGui::EndCombo();
+        const Plan& plan = s.good->plan;
+        // Teaching aids: the pass inspector with a thumbnail of every target,
+        // a before/after split, a probe of the value under the pointer.
+        targetCombo("show", plan, thumbnails, s.shownTexture);
+        float th = std::round(em * 4);
+        for (size_t i = 0; i < thumbnails.size(); ++i) {
+            const auto& [tex, name] = thumbnails[i];
+            if (!name) continue;
+            if (i % 5 != 0) ImGui::SameLine();  // five to a row
+            ImGui::BeginGroup();
+            ImGui::PushID(tex);
+            // Flipped: OpenGL's row 0 is the bottom.
+            if (ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(name)), ImVec2(th, th), ImVec2(0, 1),
+                                   ImVec2(1, 0), s.shownTexture == tex ? 3 : 1))
+                s.shownTexture = s.shownTexture == tex ? -1 : tex;
+            ImGui::PopID();
+            ImGui::TextDisabled("%s", targetName(plan, tex).c_str());
+            ImGui::EndGroup();
         }
-        ImGui::Text("frame %.1f ms", s.lastFrameMs);
-        for (const auto& t : s.lastTimings) {
-            const Pass& pass = s.good->plan.passes[size_t(t.pass)];
-            ImGui::Text("  pass %d (line %d, %s): %.2f ms", t.pass, pass.loc.line,
-                        pass.targets.empty() ? "screen" : "target", t.ms);
+        ImGui::Checkbox("Before/after split", &s.compare);
+        if (s.compare) {
+            if (s.compareLeft == s.compareRight && !thumbnails.empty()) s.compareLeft = thumbnails.back().first;
+            targetCombo("left", plan, thumbnails, s.compareLeft);
+            targetCombo("right", plan, thumbnails, s.compareRight);
+            ImGui::SliderFloat("divider", &s.divider, 0.f, 1.f);
+            ImGui::TextDisabled("drag across the picture to move it");
+        }
+        ImGui::Checkbox("Probe (hover the picture)", &s.probe);
+        if (!s.probeText.empty()) ImGui::TextUnformatted(s.probeText.c_str());
+
+        // Timings fold away, so the sliders stay near the top.
+        std::string timings = fmt::format("frame {:.1f} ms, {} pass{}###timings", s.lastFrameMs, s.lastTimings.size(),
+                                          s.lastTimings.size() == 1 ? "" : "es");
+        if (ImGui::TreeNode(timings.c_str())) {
+            for (const auto& t : s.lastTimings) ImGui::Text("%s: %.2f ms", passName(plan, t.pass).c_str(), t.ms);
+            ImGui::TreePop();
         }
         // A warning badge for any target holding NaN, Inf, negatives or
         // values past the half-float range (see render --health).
@@ -153,10 +305,11 @@ std::vector<ViewCommand> drawPanel(ViewerState& s) {
                                h.health.inf, h.health.negative, h.health.above65504);
             ImGui::PopStyleColor();
         }
-        for (size_t p = 0; p < s.good->plan.programs.size(); ++p) programGroup(s, int(p), p == 0);
+        controls(s);
     }
     if (!s.status.empty()) ImGui::TextDisabled("%s", s.status.c_str());
-    ImGui::End();
+    ImGui::PopTextWrapPos();
+    ImGui::PopItemWidth();
     return asked;
 }
 

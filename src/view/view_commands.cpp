@@ -60,11 +60,14 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
             return std::nullopt;
         }
         c.unit = int(u);
+    } else if (word == "help") {
+        if (!want(0, "help")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Help;
     } else if (word == "quit") {
         if (!want(0, "quit")) return std::nullopt;
         c.kind = ViewCommand::Kind::Quit;
     } else {
-        error = "unknown command '" + word + "' (set, reload, save, show, quit)";
+        error = "unknown command '" + word + "' (set, reload, save, show, help, quit)";
         return std::nullopt;
     }
     return c;

@@ -5,7 +5,12 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
+#include <sys/epoll.h>
+#include <sys/eventfd.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -21,19 +26,33 @@
 #include "gl/window_frame.h"
 #include "image/text.h"
 #include "plan/dependencies.h"
+#include "view/view_model.h"
 
 namespace glimmer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
+// Set by the window's callbacks (chained before ImGui's): something the user
+// did, or the window was exposed, so a frame must be drawn.
+std::atomic<bool> gInput{false};
+// Cleared before GLFW shuts down, so a thread that wakes the loop stops doing so.
+std::atomic<bool> gWindowAlive{false};
+
+void wake() {
+    if (gWindowAlive) glfwPostEmptyEvent();
+}
+
 // Commands arrive from --exec, from standard input (a thread of its own, so
 // a silent stdin never blocks the window) and from the panel's buttons.
 class CommandQueue {
 public:
     void push(std::string line) {
-        std::lock_guard<std::mutex> lock(mutex_);
-        lines_.push_back(std::move(line));
+        {
+            std::lock_guard<std::mutex> lock(mutex_);
+            lines_.push_back(std::move(line));
+        }
+        wake();  // the loop sleeps in glfwWaitEvents until something happens
     }
     std::vector<std::string> take() {
         std::lock_guard<std::mutex> lock(mutex_);
@@ -47,10 +66,77 @@ private:
     std::deque<std::string> lines_;
 };
 
+// Sleeps on the file watch's inotify descriptor and wakes the window's
+// loop when the kernel reports a change; the loop itself reads the events.
+// Edge-triggered, so unread events do not make it spin.
+class FileWaker {
+public:
+    explicit FileWaker(int notifyFd) {
+        if (notifyFd < 0) return;
+        epoll_ = ::epoll_create1(EPOLL_CLOEXEC);
+        stop_ = ::eventfd(0, EFD_CLOEXEC);
+        if (epoll_ < 0 || stop_ < 0) return;
+        epoll_event ev{};
+        ev.events = EPOLLIN | EPOLLET;
+        ev.data.fd = notifyFd;
+        ::epoll_ctl(epoll_, EPOLL_CTL_ADD, notifyFd, &ev);
+        ev.events = EPOLLIN;
+        ev.data.fd = stop_;
+        ::epoll_ctl(epoll_, EPOLL_CTL_ADD, stop_, &ev);
+        thread_ = std::thread([this] {
+            for (;;) {
+                epoll_event got[2];
+                int n = ::epoll_wait(epoll_, got, 2, -1);
+                for (int i = 0; i < n; ++i)
+                    if (got[i].data.fd == stop_) return;
+                if (n > 0) wake();
+            }
+        });
+    }
+    ~FileWaker() {
+        if (thread_.joinable()) {
+            std::uint64_t one = 1;
+            (void)!::write(stop_, &one, sizeof one);
+            thread_.join();
+        }
+        if (epoll_ >= 0) ::close(epoll_);
+        if (stop_ >= 0) ::close(stop_);
+    }
+
+private:
+    int epoll_ = -1, stop_ = -1;
+    std::thread thread_;
+};
+
+void markInput(GLFWwindow*) { gInput = true; }
+
+// Keys pressed since the last frame, in order. ImGui 1.86 (Debian's) keeps
+// only whether a key is down at the frame: a press and its release handled in
+// one batch of events (a quick tap while a frame renders, xdotool's `key`)
+// would never be seen, so presses are queued here.
+std::vector<int> gKeyPresses;
+
+// Installed before ImGui's backend, which keeps and calls them: any input
+// marks that a frame is due.
+void installWakeCallbacks(GLFWwindow* w) {
+    glfwSetWindowRefreshCallback(w, markInput);
+    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { markInput(win); });
+    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { markInput(win); });
+    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { markInput(win); });
+    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
+        if (action == GLFW_PRESS) gKeyPresses.push_back(key);
+        markInput(win);
+    });
+    glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { markInput(win); });
+    glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { markInput(win); });
+    glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { markInput(win); });
+    glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { markInput(win); });
+}
+
 class Viewer {
 public:
     Viewer(const ViewOptions& o, GlfwWindow& window, int width, int height)
-        : options_(o), window_(window), width_(width), height_(height) {}
+        : options_(o), window_(window), width_(width), height_(height), reqW_(width), reqH_(height) {}
 
     // The script at w x h, parsed, planned and prepared on a renderer of its
     // own. False (with diagnostics) when anything failed; `renderer` is then null.
@@ -69,6 +155,33 @@ public:
         return renderer != nullptr;
     }
 
+    // Prints errors first, then only the warnings not printed before (a
+    // reload does not repeat the seed's warnings every time), and keeps both
+    // for the panel.
+    void report(const Diagnostics& diags, const SourceTexts& sources) {
+        s_.errors.clear();
+        s_.warnings.clear();
+        std::string errors, warnings;
+        int repeated = 0;
+        for (const auto& d : diags.all()) {
+            std::string text = formatDiagnostic(d, sources);
+            std::string where = d.loc.line > 0 ? fmt::format("{}:{}", d.file, d.loc.line) : d.file;
+            if (d.severity == Severity::Error) {
+                s_.errors.push_back({text, where});
+                errors += text + "\n";
+            } else {
+                s_.warnings.push_back({text, where});
+                if (printedWarnings_.insert(text).second) warnings += text + "\n";
+                else ++repeated;
+            }
+        }
+        std::cerr << errors << warnings;
+        if (!s_.errors.empty() || !warnings.empty())
+            std::cerr << fmt::format("{} error{}, {} warning{}{}\n", s_.errors.size(), s_.errors.size() == 1 ? "" : "s",
+                                     s_.warnings.size(), s_.warnings.size() == 1 ? "" : "s",
+                                     repeated ? fmt::format(" ({} shown before)", repeated) : "");
+    }
+
     // Loads the script at the current size. On any error the last good
     // script, renderer and values stay; the error is shown and printed.
     void load(const char* why) {
@@ -77,11 +190,10 @@ public:
         std::unique_ptr<Renderer> renderer;
         prepareAt(width_, height_, next, renderer, diags);
         watchFilesOf(next.plan);
-        std::ostringstream printed;
-        printDiagnostics(diags, next.sources, printed);
-        std::cerr << printed.str();
+        report(diags, next.sources);
         if (!renderer) {
-            s_.error = printed.str().empty() ? "the script could not be loaded" : printed.str();
+            if (s_.errors.empty()) s_.errors.push_back({"the script could not be loaded", options_.script});
+            s_.failed = true;
             s_.status = fmt::format("{} failed; keeping the last good picture", why);
             std::cerr << "glimmer view: " << s_.status << "\n";
             return;
@@ -90,12 +202,18 @@ public:
         if (s_.good && s_.values) values.carryOver(s_.good->plan, *s_.values, next.plan);
         else
             for (const auto& a : options_.sets) values.applySet(next.plan, a, diags);
+        bool first = !s_.good;
         s_.good = std::move(next);
         s_.renderer = std::move(renderer);
         s_.values = values;
         s_.drawnWith.reset();
-        s_.error.clear();
+        s_.failed = false;
         s_.drawAll = true;
+        s_.pictureW = s_.good->plan.width;
+        s_.pictureH = s_.good->plan.height;
+        if (first || s_.hardcopyAspect) sizeWithAspect(s_.pictureW, s_.pictureH, 1920, s_.hardcopy[0], s_.hardcopy[1]);
+        s_.turns = sceneTurns(s_.good->plan);
+        if (!s_.turns) resetView();
         if (s_.shownTexture >= int(s_.good->plan.textures.size())) s_.shownTexture = -1;
         s_.status = why;
         std::cerr << "glimmer view: " << why << "\n";
@@ -109,66 +227,79 @@ public:
             return kExitScriptError;
         }
         load("loaded");
+        GLFWwindow* w = window_.handle();
+        installWakeCallbacks(w);
         ImGui::CreateContext();
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
-        ImGui_ImplGlfw_InitForOpenGL(window_.handle(), true);
+        ImGui_ImplGlfw_InitForOpenGL(w, true);
         ImGui_ImplOpenGL3_Init("#version 130");
-        auto lastPoll = Clock::now(), lastTick = Clock::now();
+        float scale = float(options_.uiScale);
+        if (scale <= 0) {
+            float sx = 1, sy = 1;
+            glfwGetWindowContentScale(w, &sx, &sy);
+            scale = std::max(1.f, std::max(sx, sy));
+        }
+        setUpFonts(scale);
+        std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
+        gWindowAlive = true;
+        FileWaker waker(watch_.notifyFd());
+
+        auto lastTick = Clock::now();
         bool quit = false;
-        int resizeW = width_, resizeH = height_;
-        auto resizeAt = Clock::time_point::max();
-        while (!quit && !glfwWindowShouldClose(window_.handle())) {
-            glfwWaitEventsTimeout(0.02);
+        int framesLeft = 3;  // ImGui settles its layout over a frame or two
+        while (!quit && !glfwWindowShouldClose(w)) {
+            // Sleep until something happens: input, a command, a file the
+            // kernel reports, a resize to settle; a running Timer draws at 50 Hz.
+            ImGuiIO& io = ImGui::GetIO();
+            bool animating = s_.playing && timerUsed();
+            if (framesLeft > 0) glfwPollEvents();
+            else if (animating) glfwWaitEventsTimeout(0.02);
+            else if (watch_.busy() || resizeAt_ != Clock::time_point::max()) glfwWaitEventsTimeout(0.025);
+            else if (io.WantTextInput) glfwWaitEventsTimeout(0.5);  // the text cursor blinks
+            else glfwWaitEvents();
+            bool draw = framesLeft > 0 || animating;
+            if (framesLeft > 0) --framesLeft;
+            if (gInput.exchange(false)) {
+                framesLeft = 3;
+                draw = true;
+            }
             auto now = Clock::now();
             if (s_.playing) s_.time += std::chrono::duration<double>(now - lastTick).count();
             lastTick = now;
 
-            // A resize re-plans at the new size once the user stops dragging.
-            int fbw = 0, fbh = 0;
-            glfwGetFramebufferSize(window_.handle(), &fbw, &fbh);
-            if (fbw > 0 && fbh > 0 && (fbw != resizeW || fbh != resizeH)) {
-                resizeW = fbw;
-                resizeH = fbh;
-                resizeAt = now + std::chrono::milliseconds(150);
+            draw |= followWindowSize(now);
+            auto changed = watch_.poll(now);
+            if (!changed.empty()) {
+                load(fmt::format("reloaded after a change to {}", changed.front()).c_str());
+                draw = true;
             }
-            if (now >= resizeAt) {
-                resizeAt = Clock::time_point::max();
-                if (resizeW != width_ || resizeH != height_) {
-                    width_ = resizeW;
-                    height_ = resizeH;
-                    load(fmt::format("resized to {}x{}", width_, height_).c_str());
-                }
+            for (const auto& line : queue.take()) {
+                quit |= execute(line);
+                draw = true;
             }
-            if (now - lastPoll >= std::chrono::milliseconds(25)) {
-                lastPoll = now;
-                auto changed = watch_.poll(now);
-                if (!changed.empty()) load(fmt::format("reloaded after a change to {}", changed.front()).c_str());
-            }
-            for (const auto& line : queue.take()) quit |= execute(line);
             if (quit) break;
+            if (!draw) continue;
 
-            if (!ImGui::GetIO().WantCaptureKeyboard && glfwGetKey(window_.handle(), GLFW_KEY_S) == GLFW_PRESS && !sDown_)
-                save("glimmer.png", false);
-            sDown_ = glfwGetKey(window_.handle(), GLFW_KEY_S) == GLFW_PRESS;
-
-            mouse();
-            renderScene();
+            int fbw = 0, fbh = 0;
+            glfwGetFramebufferSize(w, &fbw, &fbh);
             ImGui_ImplOpenGL3_NewFrame();
             ImGui_ImplGlfw_NewFrame();
             ImGui::NewFrame();
-            for (const auto& c : drawPanel(s_)) quit |= apply(c);
-            if (s_.showValues) {
-                std::string text = overlayText(s_);
-                ImGui::GetForegroundDrawList()->AddText(ImVec2(float(fbw) - 260.f, 12.f), IM_COL32(255, 255, 255, 255),
-                                                        text.c_str());
-            }
+            quit |= keys();
+            mouse(fbw, fbh);
+            renderScene();
+            std::vector<ViewCommand> asked;
+            if (s_.panelShown) asked = panel(fbw, fbh);
+            overlay();
             ImGui::Render();
-            glfwGetFramebufferSize(window_.handle(), &fbw, &fbh);
-            if (frame_) frame_->begin(fbw, fbh, 0.12f, 0.12f, 0.14f);
-            if (s_.renderer) s_.renderer->present(s_.shownTexture, fbw, fbh);
+            frame_->begin(fbw, fbh, 0.12f, 0.12f, 0.14f);
+            presentPicture(fbw, fbh);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-            glfwSwapBuffers(window_.handle());
+            glfwSwapBuffers(w);
+            for (const auto& c : asked) quit |= apply(c);
+            layout();
         }
+        gWindowAlive = false;
         s_.renderer.reset();
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
@@ -177,6 +308,122 @@ public:
     }
 
 private:
+    bool timerUsed() const {
+        if (!s_.renderer || !s_.good) return false;
+        for (size_t p = 0; p < s_.good->plan.programs.size(); ++p)
+            if (s_.renderer->usesTimer(int(p))) return true;
+        return false;
+    }
+
+    // Where the picture is drawn in the window (top-left origin): its exact
+    // size at the top left, or fitted into what the panel leaves in fullscreen.
+    void pictureRect(int fbw, int fbh, int& x, int& y, int& w, int& h) const {
+        x = y = 0;
+        if (fullscreen_) {
+            w = std::max(1, fbw - (s_.panelShown ? panelW_ : 0));
+            h = fbh;
+            return;
+        }
+        w = width_;
+        h = height_;
+    }
+
+    void presentPicture(int fbw, int fbh) {
+        if (!s_.renderer) return;
+        int x, y, w, h;
+        pictureRect(fbw, fbh, x, y, w, h);
+        if (s_.compare) {
+            float d = std::clamp(s_.divider, 0.f, 1.f);
+            s_.renderer->presentIn(s_.compareLeft, fbh, x, y, w, h, 0.f, d);
+            s_.renderer->presentIn(s_.compareRight, fbh, x, y, w, h, d, 1.f);
+        } else {
+            s_.renderer->presentIn(s_.shownTexture, fbh, x, y, w, h);
+        }
+    }
+
+    // The window holds the picture and the panel beside it. A size the user
+    // gives the window (dragging its edge) is added to the picture's, which
+    // is drawn again at that size once the dragging stops.
+    bool followWindowSize(Clock::time_point now) {
+        if (fullscreen_) return false;
+        int fbw = 0, fbh = 0;
+        glfwGetFramebufferSize(window_.handle(), &fbw, &fbh);
+        if (fbw <= 0 || fbh <= 0) return false;
+        if (fbw == reqW_ && fbh == reqH_) {
+            resizeAt_ = Clock::time_point::max();
+            return false;
+        }
+        if (fbw != seenW_ || fbh != seenH_ || resizeAt_ == Clock::time_point::max()) {
+            seenW_ = fbw;
+            seenH_ = fbh;
+            resizeAt_ = now + std::chrono::milliseconds(150);
+            return false;
+        }
+        if (now < resizeAt_) return false;
+        resizeAt_ = Clock::time_point::max();
+        int nw = std::max(16, width_ + fbw - reqW_), nh = std::max(16, height_ + fbh - reqH_);
+        reqW_ = fbw;
+        reqH_ = fbh;
+        if (nw != width_ || nh != height_) {
+            width_ = nw;
+            height_ = nh;
+            load(fmt::format("resized to {}x{}", width_, height_).c_str());
+        }
+        return true;
+    }
+
+    // Asks for the window size that holds the picture and the panel.
+    void layout() {
+        if (fullscreen_) return;
+        int maxH = 1000;
+        if (GLFWmonitor* m = glfwGetPrimaryMonitor()) {
+            int mx, my, mw, mh;
+            glfwGetMonitorWorkarea(m, &mx, &my, &mw, &mh);
+            if (mh > 200) maxH = mh - 40;
+        }
+        WindowLayout l = layoutWindow(width_, height_, s_.panelShown, panelW_, panelH_, maxH);
+        if (l.windowW != reqW_ || l.windowH != reqH_) {
+            reqW_ = l.windowW;
+            reqH_ = l.windowH;
+            glfwSetWindowSize(window_.handle(), reqW_, reqH_);
+            gInput = true;  // draw again at the new size
+        }
+    }
+
+    std::vector<ViewCommand> panel(int fbw, int fbh) {
+        int px, py, pw, ph;
+        pictureRect(fbw, fbh, px, py, pw, ph);
+        ImGui::SetNextWindowPos(ImVec2(float(px + pw), 0.f), ImGuiCond_Always);
+        // Width 0: ImGui fits the panel's width to its content every frame.
+        ImGui::SetNextWindowSize(ImVec2(0.f, float(fbh)), ImGuiCond_Always);
+        ImGui::SetNextWindowBgAlpha(1.f);
+        ImGui::Begin("Glimmer", nullptr,
+                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
+        std::vector<std::pair<int, unsigned>> thumbs;
+        if (s_.renderer)
+            for (int t : s_.renderer->renderTargets()) thumbs.push_back({t, s_.renderer->textureName(t)});
+        auto asked = drawPanel(s_, thumbs);
+        panelH_ = int(ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y + 1);
+        panelW_ = int(ImGui::GetWindowWidth());
+        if (fullscreen_) panelW_ = std::min(panelW_, fbw / 2);
+        ImGui::End();
+        return asked;
+    }
+
+    // "Show values": one line per control, over a dark box, at the
+    // picture's top left: where the saved PNG has it.
+    void overlay() {
+        if (!s_.showValues) return;
+        std::string text = overlayText(s_);
+        if (text.empty()) return;
+        ImDrawList* dl = ImGui::GetForegroundDrawList();
+        ImVec2 size = ImGui::CalcTextSize(text.c_str());
+        float pad = 4.f * ImGui::GetStyle().ItemSpacing.y / 4.f;
+        dl->AddRectFilled(ImVec2(8.f, 8.f), ImVec2(8.f + size.x + 2 * pad, 8.f + size.y + 2 * pad), IM_COL32(0, 0, 0, 190));
+        dl->AddText(ImVec2(8.f + pad, 8.f + pad), IM_COL32(255, 255, 255, 255), text.c_str());
+    }
+
     void watchFilesOf(const Plan& plan) {
         std::set<std::string> files = {options_.script};
         for (const auto& p : watch_.paths()) files.insert(p);  // keep what a broken edit may still need
@@ -193,30 +440,109 @@ private:
         if (list != watch_.paths()) watch_.watch(list);
     }
 
-    void mouse() {
+    glm::mat4 sceneMatrix() const {
+        glm::mat4 m = glm::scale(glm::mat4(1.f), glm::vec3(s_.zoom));
+        m = glm::rotate(m, glm::radians(s_.pitch), glm::vec3(1, 0, 0));
+        return glm::rotate(m, glm::radians(s_.yaw), glm::vec3(0, 1, 0));
+    }
+
+    void resetView() {
+        s_.yaw = s_.pitch = 0;
+        s_.zoom = 1;
+        s_.sceneMoved = true;
+    }
+
+    // Keys, when no text field has the keyboard. True: quit.
+    bool keys() {
+        ImGuiIO& io = ImGui::GetIO();
+        std::vector<int> presses;
+        presses.swap(gKeyPresses);
+        if (io.WantTextInput) return false;
+        auto pressed = [&](int key) { return std::find(presses.begin(), presses.end(), key) != presses.end(); };
+        if (pressed(GLFW_KEY_Q) || pressed(GLFW_KEY_ESCAPE)) return true;
+        if (pressed(GLFW_KEY_SPACE)) s_.playing = !s_.playing;
+        if (pressed(GLFW_KEY_H)) s_.panelShown = !s_.panelShown;
+        if (pressed(GLFW_KEY_R)) load("reloaded");
+        if (pressed(GLFW_KEY_0) || pressed(GLFW_KEY_KP_0)) resetView();
+        if (pressed(GLFW_KEY_S)) save(nextFreeName("glimmer", ".png"), false);
+        if (pressed(GLFW_KEY_F)) toggleFullscreen();
+        return false;
+    }
+
+    void toggleFullscreen() {
+        GLFWwindow* w = window_.handle();
+        if (!fullscreen_) {
+            GLFWmonitor* m = glfwGetPrimaryMonitor();
+            const GLFWvidmode* mode = m ? glfwGetVideoMode(m) : nullptr;
+            if (!mode) return;
+            glfwGetWindowPos(w, &savedX_, &savedY_);
+            fullscreen_ = true;
+            glfwSetWindowMonitor(w, m, 0, 0, mode->width, mode->height, mode->refreshRate);
+        } else {
+            fullscreen_ = false;
+            glfwSetWindowMonitor(w, nullptr, savedX_, savedY_, reqW_, reqH_, 0);
+        }
+        gInput = true;
+    }
+
+    // Drag turns and the wheel zooms, only over the picture (never over the
+    // panel, even in the frame the pointer crosses into it) and only for
+    // scenes where turning means something (sceneTurns).
+    void mouse(int fbw, int fbh) {
         ImGuiIO& io = ImGui::GetIO();
         GLFWwindow* w = window_.handle();
         double x = 0, y = 0;
         glfwGetCursorPos(w, &x, &y);
+        int px, py, pw, ph;
+        pictureRect(fbw, fbh, px, py, pw, ph);
+        bool over = x >= px && x < px + pw && y >= py && y < py + ph && !io.WantCaptureMouse;
         bool down = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-        if (down && dragging_ && !io.WantCaptureMouse) {
-            s_.yaw += float(x - lastX_) * 0.4f;
-            s_.pitch += float(y - lastY_) * 0.4f;
-            s_.sceneMoved = true;
+        if (s_.compare) {  // the divider follows a drag
+            if (down && (dragging_ || over)) s_.divider = std::clamp(float((x - px) / std::max(pw, 1)), 0.f, 1.f);
+            dragging_ = down && (dragging_ || over);
+        } else {
+            if (down && dragging_ && s_.turns) {
+                s_.yaw += float(x - lastX_) * 0.4f;
+                s_.pitch += float(y - lastY_) * 0.4f;
+                s_.sceneMoved = true;
+            }
+            dragging_ = down && (dragging_ || over);
+            if (over && s_.turns && io.MouseWheel != 0) {
+                s_.zoom = std::clamp(s_.zoom * std::pow(1.1f, io.MouseWheel), 0.05f, 20.f);
+                s_.sceneMoved = true;
+            }
         }
-        dragging_ = down && !io.WantCaptureMouse;
         lastX_ = x;
         lastY_ = y;
-        if (!io.WantCaptureMouse && io.MouseWheel != 0) {
-            s_.zoom = std::clamp(s_.zoom * std::pow(1.1f, io.MouseWheel), 0.05f, 20.f);
-            s_.sceneMoved = true;
+        if (s_.renderer) s_.renderer->setSceneTransform(sceneMatrix());
+        probe(over && !down, x - px, y - py, pw, ph);
+    }
+
+    // The pixel probe: the float value of every channel of the shown target
+    // under the pointer, read back once per new picture.
+    void probe(bool over, double x, double y, int pw, int ph) {
+        s_.probeText.clear();
+        if (!s_.probe || !over || !s_.renderer || s_.compare) return;
+        if (probeVersion_ != pictureVersion_ || probeTexture_ != s_.shownTexture) {
+            probeImage_ = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTextureFloat(s_.shownTexture);
+            probeVersion_ = pictureVersion_;
+            probeTexture_ = s_.shownTexture;
         }
-        if (s_.renderer) {
-            glm::mat4 m = glm::scale(glm::mat4(1.f), glm::vec3(s_.zoom));
-            m = glm::rotate(m, glm::radians(s_.pitch), glm::vec3(1, 0, 0));
-            m = glm::rotate(m, glm::radians(s_.yaw), glm::vec3(0, 1, 0));
-            s_.renderer->setSceneTransform(m);
-        }
+        const Image& img = probeImage_;
+        if (img.empty()) return;
+        double scale = std::min(double(pw) / img.width, double(ph) / img.height);
+        double ox = (pw - img.width * scale) / 2, oy = (ph - img.height * scale) / 2;
+        int ix = int(std::floor((x - ox) / scale)), iy = int(std::floor((y - oy) / scale));
+        if (ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return;
+        size_t i = (size_t(iy) * size_t(img.width) + size_t(ix)) * 4;
+        float v[4];
+        for (int c = 0; c < 4; ++c) v[c] = img.type == Image::Type::F32 ? img.f32[i + size_t(c)] : img.u8[i + size_t(c)] / 255.f;
+        s_.probeText = fmt::format("({}, {}) of {}: r {:.4g}  g {:.4g}  b {:.4g}  a {:.4g}", ix, iy,
+                                   s_.shownTexture < 0 ? std::string("screen") : fmt::format("texture {}", s_.shownTexture),
+                                   v[0], v[1], v[2], v[3]);
+        ImGui::BeginTooltip();
+        ImGui::TextUnformatted(s_.probeText.c_str());
+        ImGui::EndTooltip();
     }
 
     // Runs the passes that changed since the picture was drawn: all after a
@@ -244,6 +570,7 @@ private:
         s_.drawnWith = s_.values;
         s_.drawnTime = s_.time;
         s_.drawAll = false;
+        ++pictureVersion_;
         // The numeric health badge reads every target back: at most twice a
         // second, so dragging a slider stays smooth.
         auto now = Clock::now();
@@ -271,17 +598,16 @@ private:
     bool apply(const ViewCommand& c) {
         switch (c.kind) {
         case ViewCommand::Kind::Quit: return true;
+        case ViewCommand::Kind::Help: std::cerr << helpText(); break;
         case ViewCommand::Kind::Reload: load("reloaded"); break;
         case ViewCommand::Kind::Set: {
             if (!s_.good) break;
             Diagnostics d;
             s_.values->applySet(s_.good->plan, fmt::format("{}={}", c.name, c.value), d);
-            std::ostringstream out;
-            printDiagnostics(d, s_.good->sources, out);
             for (const auto& diag : d.all()) std::cerr << "glimmer view: " << severityName(diag.severity) << ": " << diag.message << "\n";
             break;
         }
-        case ViewCommand::Kind::Save: save(c.name, c.unit == -2); break;
+        case ViewCommand::Kind::Save: save(c.name.empty() ? nextFreeName("glimmer", ".png") : c.name, c.unit == -2); break;
         case ViewCommand::Kind::Show:
             if (c.unit < 0) s_.shownTexture = -1;
             else if (s_.good && s_.good->plan.finalUnits.count(c.unit)) s_.shownTexture = s_.good->plan.finalUnits.at(c.unit);
@@ -291,9 +617,9 @@ private:
         return false;
     }
 
-    // The same pixels `glimmer render` writes for these values and this size;
-    // with the overlay on, the values are burned in, so a handout records its
-    // own parameters.
+    // What is shown: the picture (the same pixels `glimmer render` writes for
+    // these values and this size) or the inspected target. With the overlay
+    // on, the values are burned in, so a handout records its own parameters.
     void save(const std::string& file, bool hardcopy) {
         if (!s_.renderer || !s_.good) {
             std::cerr << "glimmer view: nothing to save yet\n";
@@ -304,7 +630,7 @@ private:
             img = renderAtSize(s_.hardcopy[0], s_.hardcopy[1]);
         } else {
             renderScene();  // a command may have changed values since the last frame
-            img = s_.renderer->readScreen();
+            img = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTexture(s_.shownTexture);
         }
         if (img.empty()) return;
         if (s_.showValues) drawText(img, 8, 8, overlayText(s_));
@@ -324,20 +650,30 @@ private:
         if (!prepareAt(w, h, ls, r, diags)) return {};
         UniformValues v(ls.plan);
         v.carryOver(s_.good->plan, *s_.values, ls.plan);
+        r->setSceneTransform(sceneMatrix());
         r->render(v, s_.time);
         return r->readScreen();
     }
 
     const ViewOptions& options_;
     GlfwWindow& window_;
-    int width_, height_;
+    int width_, height_;  // the picture
+    int reqW_, reqH_;     // the window size last asked for
+    int seenW_ = 0, seenH_ = 0;
+    Clock::time_point resizeAt_ = Clock::time_point::max();
+    int panelW_ = 0, panelH_ = 0;
+    bool fullscreen_ = false;
+    int savedX_ = 0, savedY_ = 0;
     ViewerState s_;
     FileWatch watch_;
-    bool sDown_ = false;
     Clock::time_point lastHealth_{};
     std::string lastReport_;
+    std::set<std::string> printedWarnings_;
     bool dragging_ = false;
     double lastX_ = 0, lastY_ = 0;
+    std::uint64_t pictureVersion_ = 0, probeVersion_ = ~0ull;
+    int probeTexture_ = -2;
+    Image probeImage_;
     std::unique_ptr<WindowFrame> frame_;  // clears the window; the viewer itself calls no GL
 };
 
@@ -359,6 +695,10 @@ int runView(const ViewOptions& o) {
     int w = 600, h = 600;
     if (!o.size.empty() && !parseSize(o.size, w, h)) {
         std::cerr << fmt::format("glimmer: error: --size '{}' is not WIDTHxHEIGHT (1 to 16384 each)\n", o.size);
+        return kExitUsage;
+    }
+    if (o.uiScale != 0 && !(o.uiScale >= 0.5 && o.uiScale <= 4)) {
+        std::cerr << fmt::format("glimmer: error: --ui-scale {:g} is not between 0.5 and 4\n", o.uiScale);
         return kExitUsage;
     }
     for (const auto& line : splitCommands(o.exec)) {
