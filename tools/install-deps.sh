@@ -10,6 +10,8 @@ packages=(
   libegl-dev libgl-dev                # EGL backend, GL headers
   libegl-mesa0 libgl1-mesa-dri        # Mesa's EGL vendor and llvmpipe, for EGL surfaceless on a CPU
   libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev libtinyexr-dev libpng-dev
+  libwebp-dev                         # render --frames: animated WebP (WebPAnimEncoder/Decoder)
+  fonts-dejavu-core                   # labels of sheets and charts (DejaVu Sans through stb_truetype)
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
   clang-14 libclang-rt-14-dev         # libFuzzer targets and sanitizers (tools/fuzz-ci.sh)

@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "app/help_text.h"
 #include "lang/diagnostics.h"
 #include "view/viewer.h"
 
@@ -19,6 +20,8 @@ int run(int argc, char** argv) {
     using namespace glimmer;
     CLI::App app{"Glimmer: a GLIB-style scripted shader playground"};
     app.require_subcommand(1);
+    GlobalOptions globals;
+    addGlobalOptions(app, globals);
     RenderOptions render;
     CommonOptions check;
     ViewOptions view;
@@ -36,6 +39,7 @@ int run(int argc, char** argv) {
         return s.size() >= e.size() && s.compare(s.size() - e.size(), e.size(), e) == 0;
     };
     if (argc > 1 && endsWith(argv[1], ".glib")) args.insert(args.begin() + 1, viewWord.data());
+    if (auto code = runHelp(app, std::vector<std::string>(args.begin(), args.end()))) return *code;
     // CLI11 reports a mistyped command as "A subcommand is required"; name it.
     std::string first = args.size() > 1 ? args[1] : "";
     if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view" &&
@@ -51,6 +55,7 @@ int run(int argc, char** argv) {
         int code = app.exit(e);
         return code == 0 ? kExitOk : kExitUsage;
     }
+    if (auto code = applyGlobalOptions(globals)) return *code;
     if (app.got_subcommand("render")) return runRender(render);
     if (app.got_subcommand("check")) return runCheck(check);
     if (app.got_subcommand("view")) return runView(view);

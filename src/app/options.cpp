@@ -8,11 +8,12 @@ namespace glimmer {
 namespace {
 
 void addCommon(CLI::App* sub, CommonOptions& o) {
-    sub->add_option("script", o.script, "the .glib script")->required();
+    sub->add_option("script", o.script, "the .glib script ('-': read it from standard input; the files it names "
+                                        "resolve against the current folder)")->required();
     sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless")
         ->check(CLI::IsMember({"auto", "osmesa", "egl", "egl-device", "egl-surfaceless"}));
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
-    sub->add_option("--set", o.sets, "NAME=VALUE for a uniform range or checkbox (repeatable)");
+    sub->add_option("--set", o.sets, "NAME=VALUE for a range, checkbox, colour (R,G,B[,A]) or vector (X,Y,...) (repeatable)");
     sub->add_option("--size", o.size, "output size WxH (default: WindowSize, else 600x600)");
     sub->add_flag("--stand-ins", o.standIns, "a missing image, cube-map face, 3-D .tex or OBJ is a warning and a "
                                             "stand-in takes its place (a missing shader stays an error)");
@@ -24,7 +25,10 @@ void addCommon(CLI::App* sub, CommonOptions& o) {
 void addRenderCommand(CLI::App& app, RenderOptions& o) {
     CLI::App* sub = app.add_subcommand("render", "render a script headless to a PNG");
     addCommon(sub, o);
-    sub->add_option("-o,--output", o.output, "the PNG to write");
+    sub->add_option("-o,--output", o.output, "the PNG to write ('-': standard output); with --frames, a frame "
+                                             "pattern (frame_%04d.png) or an animated .webp");
+    sub->add_option("--frames", o.frames, "render this many frames, Timer advancing 1/FPS seconds each");
+    sub->add_option("--fps", o.fps, "frames per second of --frames");
     sub->add_option("--dump", o.dumps, "UNIT=FILE: also write the texture on that unit; .png, .hdr, .pfm or .exr "
                                        "(float targets keep their values in .hdr, .pfm and .exr) (repeatable)");
     sub->add_option("--time", o.time, "seconds since start, for the Timer uniform");
@@ -43,7 +47,7 @@ void addViewCommand(CLI::App& app, ViewOptions& o) {
     CLI::App* sub = app.add_subcommand("view", "open a window with sliders; reload on every save");
     sub->add_option("script", o.script, "the .glib script")->required();
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
-    sub->add_option("--set", o.sets, "NAME=VALUE for a uniform range or checkbox (repeatable)");
+    sub->add_option("--set", o.sets, "NAME=VALUE for a range, checkbox, colour (R,G,B[,A]) or vector (X,Y,...) (repeatable)");
     sub->add_option("--size", o.size, "window size WxH (default: WindowSize, else 600x600)");
     sub->add_option("--exec", o.exec, "commands to run, separated by ';': set NAME VALUE, reload, save FILE.png, "
                                       "show UNIT|screen, quit");

@@ -1,12 +1,17 @@
 #include <chrono>
 #include <charconv>
+#include <cmath>
+#include <optional>
 #include <iostream>
 
 #include <fmt/format.h>
 
+#include "driver/console.h"
 #include "driver/numeric_health.h"
 #include "driver/session.h"
+#include "image/animation.h"
 #include "image/image.h"
+#include "image/png_stream.h"
 
 namespace glimmer {
 namespace {
@@ -24,6 +29,37 @@ bool parseDump(const std::string& text, Dump& d) {
     return ec == std::errc() && end == text.data() + eq && d.unit >= 0 && d.unit <= 31;
 }
 
+// Where the pictures go: one PNG, standard output, numbered PNGs, or an
+// animated WebP.
+struct Output {
+    enum class Kind { Png, Stdout, Pattern, Webp };
+    Kind kind = Kind::Png;
+};
+
+std::optional<int> chooseOutput(const RenderOptions& o, Output& out) {
+    if (o.frames < 1 || !(o.fps > 0) || !std::isfinite(o.fps)) {
+        std::cerr << fmt::format("glimmer: error: --frames {} --fps {:g}: --frames must be 1 or more and --fps more "
+                                 "than 0\n", o.frames, o.fps);
+        return kExitUsage;
+    }
+    std::string lower = o.output;
+    for (auto& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+    std::string why, name;
+    if (o.output == "-") out.kind = Output::Kind::Stdout;
+    else if (isFramePattern(o.output)) out.kind = Output::Kind::Pattern;
+    else if (lower.size() > 5 && lower.compare(lower.size() - 5, 5, ".webp") == 0) out.kind = Output::Kind::Webp;
+    if (out.kind == Output::Kind::Pattern && !frameFileName(o.output, 0, name, why)) {
+        std::cerr << "glimmer: error: -o " << why << "\n";
+        return kExitUsage;
+    }
+    if (o.frames > 1 && (out.kind == Output::Kind::Png || out.kind == Output::Kind::Stdout)) {
+        std::cerr << fmt::format("glimmer: error: --frames {} writes several pictures: give -o a frame pattern such "
+                                 "as frame_%04d.png, or an animated .webp\n", o.frames);
+        return kExitUsage;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
 int runRender(const RenderOptions& o) {
@@ -39,6 +75,8 @@ int runRender(const RenderOptions& o) {
         dumps.push_back(d);
         keep.insert(d.unit);
     }
+    Output out;
+    if (auto code = chooseOutput(o, out)) return *code;
     Session s;
     if (auto code = openSession(o, keep, false, s)) return *code;
     // A unit with nothing on it is a typo: say so before drawing or writing anything.
@@ -50,13 +88,48 @@ int runRender(const RenderOptions& o) {
     }
 
     auto t0 = Clock::now();
-    s.renderer->render(*s.values, o.time);
-    Image screen = s.renderer->readScreen();
-    auto t1 = Clock::now();
-    std::string why;
-    if (!writePng(o.output, screen, why)) {
+    std::vector<Image> frames;  // for an animated file
+    std::string why, first, last;
+    Progress progress;
+    for (int i = 0; i < o.frames; ++i) {
+        s.renderer->render(*s.values, o.time + double(i) / o.fps);
+        Image screen = s.renderer->readScreen();
+        bool ok = true;
+        if (out.kind == Output::Kind::Stdout) {
+            ok = writePngToStdout(screen, why);
+        } else if (out.kind == Output::Kind::Pattern) {
+            std::string name;
+            ok = frameFileName(o.output, i, name, why) && writePng(name, screen, why);
+            (i == 0 ? first : last) = name;
+        } else if (out.kind == Output::Kind::Webp) {
+            frames.push_back(std::move(screen));
+        } else {
+            ok = writePng(o.output, screen, why);
+        }
+        if (!ok) {
+            std::cerr << "glimmer: error: " << why << "\n";
+            return kExitScriptError;
+        }
+        if (o.frames > 1) progress.update(fmt::format("render: frame {}/{}", i + 1, o.frames));
+    }
+    progress.finish();
+    if (out.kind == Output::Kind::Webp && !writeAnimatedWebp(o.output, frames, o.fps, why)) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;
+    }
+    auto t1 = Clock::now();
+    std::string wrote;
+    const int w = s.loaded.plan.width, h = s.loaded.plan.height;
+    switch (out.kind) {
+    case Output::Kind::Stdout: wrote = fmt::format("a {}x{} PNG to standard output", w, h); break;
+    case Output::Kind::Png: wrote = fmt::format("{} ({}x{})", o.output, w, h); break;
+    case Output::Kind::Pattern:
+        wrote = o.frames == 1 ? fmt::format("{} ({}x{})", first, w, h)
+                              : fmt::format("{} frames, {} to {} ({}x{}, {:g} fps)", o.frames, first, last, w, h, o.fps);
+        break;
+    case Output::Kind::Webp:
+        wrote = fmt::format("{} ({} frame{}, {}x{}, {:g} fps)", o.output, o.frames, o.frames == 1 ? "" : "s", w, h, o.fps);
+        break;
     }
     for (const auto& d : dumps) {
         auto it = s.loaded.plan.finalUnits.find(d.unit);
@@ -72,6 +145,7 @@ int runRender(const RenderOptions& o) {
             std::cerr << "glimmer: error: " << why << "\n";
             return kExitScriptError;
         }
+        wrote += fmt::format(", {} (unit {})", d.file, d.unit);
     }
     auto t2 = Clock::now();
     bool bad = false;
@@ -87,6 +161,7 @@ int runRender(const RenderOptions& o) {
                                  s.context->name(), s.renderer->rendererName(), s.startupMs, s.compileMs, ms(t0, t1),
                                  ms(t1, t2));
     }
+    reportWrote(wrote);
     if (o.strict && bad) {
         std::cerr << "glimmer: error: --strict: a target holds NaN, Inf, negative or out-of-range values\n";
         return kExitScriptError;

@@ -2,6 +2,7 @@
 // slide's uAdd = 0 / 2 / 4 row, in one command. One context and one
 // renderer serve every cell, and each cell re-runs only the passes its
 // change reaches (varying uAdd leaves the superblur as it is).
+#include <filesystem>
 #include <iostream>
 #include <sstream>
 
@@ -10,7 +11,8 @@
 
 #include "app/commands.h"
 #include "driver/session.h"
-#include "image/text.h"
+#include "app/sheet_layout.h"
+#include "driver/console.h"
 #include "plan/dependencies.h"
 
 namespace glimmer {
@@ -45,7 +47,7 @@ void addSheetCommand(CLI::App& app, SheetOptions& o) {
     sub->add_option("--vary", o.vary, "NAME=V1,V2,...: columns; a second --vary gives rows")->required();
     sub->add_option("-o,--output", o.output, "the PNG to write");
     sub->add_option("--size", o.size, "size of each cell WxH (default 256x256)");
-    sub->add_option("--set", o.sets, "NAME=VALUE for the uniforms that do not vary (repeatable)");
+    sub->add_option("--set", o.sets, "NAME=VALUE for the uniforms that do not vary: a number, true/false, R,G,B[,A] or X,Y,... (repeatable)");
     sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless");
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
     addSafetyOptions(sub, o);
@@ -80,28 +82,35 @@ int runSheet(const SheetOptions& o) {
             if (a->name.empty()) continue;
             Diagnostics d;
             UniformValues probe = *s.values;
-            if (!probe.applySet(plan, a->name + "=" + v, d) || d.warningCount() > 0) {
+            if (!probe.applySet(plan, a->name + "=" + v, d, "--vary") || d.warningCount() > 0) {
                 printDiagnostics(d, s.loaded.sources, std::cerr);
                 return kExitUsage;
             }
         }
     }
 
-    const int gap = 8, label = 28;
-    const int cw = plan.width, ch = plan.height;
-    Image sheet = Image::rgba8(int(cols.values.size()) * (cw + gap) + gap,
-                               int(rows.values.size()) * (ch + gap + label) + gap);
+    std::vector<std::string> colValues = cols.values, rowValues;
+    if (!rows.name.empty()) rowValues = rows.values;
+    std::string title = std::filesystem::path(o.script == "-" ? kStdinScriptName : o.script).filename().string();
+    for (const auto& set : o.sets) {
+        auto eq = set.find('=');
+        title += "   " + set.substr(0, eq) + " = " + set.substr(eq + 1);
+    }
+    SheetLayout layout = layoutSheet(title, cols.name, colValues, rows.name, rowValues, plan.width, plan.height);
+    Image sheet = Image::rgba8(layout.width, layout.height);
     for (size_t i = 0; i < sheet.u8.size(); ++i) sheet.u8[i] = (i % 4 == 3) ? 255 : 24;
+    drawSheetLabels(sheet, layout);
 
     UniformValues drawn = *s.values;
     bool first = true;
     int done = 0, total = int(cols.values.size() * rows.values.size());
+    Progress progress;
     for (size_t r = 0; r < rows.values.size(); ++r) {
         for (size_t c = 0; c < cols.values.size(); ++c) {
             UniformValues v = *s.values;
             Diagnostics d;
-            v.applySet(plan, cols.name + "=" + cols.values[c], d);
-            if (!rows.name.empty()) v.applySet(plan, rows.name + "=" + rows.values[r], d);
+            v.applySet(plan, cols.name + "=" + cols.values[c], d, "--vary");
+            if (!rows.name.empty()) v.applySet(plan, rows.name + "=" + rows.values[r], d, "--vary");
             Change change;
             change.everything = first;
             change.programs = v.programsDifferingFrom(drawn);
@@ -109,20 +118,19 @@ int runSheet(const SheetOptions& o) {
             s.renderer->render(v, 0, nullptr, &only);
             drawn = v;
             first = false;
-            int x = gap + int(c) * (cw + gap), y = gap + int(r) * (ch + gap + label);
-            std::string text = cols.name + " = " + cols.values[c];
-            if (!rows.name.empty()) text += "   " + rows.name + " = " + rows.values[r];
-            drawText(sheet, x, y, text, 2);
-            blit(sheet, s.renderer->readScreen(), x, y + label);
-            std::cerr << fmt::format("\rsheet: {}/{} rendered", ++done, total) << std::flush;
+            auto [x, y] = layout.cellOrigin(int(c), int(r));
+            blit(sheet, s.renderer->readScreen(), x, y);
+            progress.update(fmt::format("sheet: {}/{} rendered", ++done, total));
         }
     }
-    std::cerr << "\n";
+    progress.finish();
     std::string why;
     if (!writePng(o.output, sheet, why)) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;
     }
+    reportWrote(fmt::format("{} ({} by {} cells of {}x{}, {}x{})", o.output, cols.values.size(), rows.values.size(),
+                            plan.width, plan.height, sheet.width, sheet.height));
     return kExitOk;
 }
 

@@ -17,6 +17,7 @@
 #include "app/commands.h"
 #include "backends/context.h"
 #include "bloom/blur_methods.h"
+#include "driver/console.h"
 #include "driver/data_dir.h"
 #include "driver/prepare_script.h"
 #include "driver/stats.h"
@@ -146,9 +147,10 @@ int runTradeoff(const TradeoffOptions& o) {
         if (keep) methods.push_back(m);
     }
     std::vector<Row> rows;
+    Progress progress;
     for (size_t i = 0; i < methods.size(); ++i) {
         const BlurMethod& m = methods[i];
-        std::cerr << fmt::format("\rtradeoff: {}/{} {:<16}", i + 1, methods.size(), m.name) << std::flush;
+        progress.update(fmt::format("tradeoff: {}/{} {}", i + 1, methods.size(), m.name));
         fs::path script = dir / "method.glib";
         std::ofstream(script) << m.script(imagePath, input.width, input.height, textureFormatName(format));
         Diagnostics diags;
@@ -160,7 +162,7 @@ int runTradeoff(const TradeoffOptions& o) {
         request.plan.width = input.width;
         request.plan.height = input.height;
         if (!prepareScript(request, *renderer, diags, loaded)) {
-            std::cerr << "\n";
+            progress.finish();
             printDiagnostics(diags, loaded.sources, std::cerr);
             return kExitScriptError;
         }
@@ -188,7 +190,7 @@ int runTradeoff(const TradeoffOptions& o) {
         row.megabytes = texels * (m.tapsPerPixel + m.texelsWrittenPerPixel) * bytesPerTexel(format) / 1e6;
         rows.push_back(row);
     }
-    std::cerr << "\n";
+    progress.finish();
 
     // The table.
     std::string title = fmt::format("{} on {}, {}x{} {}, median of {}", context->name(), renderer->rendererName(),
@@ -247,7 +249,7 @@ int runTradeoff(const TradeoffOptions& o) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;
     }
-    std::cerr << fmt::format("wrote {0}.csv, {0}.json, {0}.png\n", o.output);
+    reportWrote(fmt::format("{0}.csv, {0}.json, {0}.png", o.output));
     return kExitOk;
 }
 

@@ -18,7 +18,10 @@ struct LoadedScript {
     Assets assets;        // the files it names, decoded (driver/prepare_script.h fills it)
 };
 
-// Reads and parses `path` and builds its plan. False when the file cannot be
+// The name diagnostics give a script read from standard input ("-").
+inline constexpr const char* kStdinScriptName = "<stdin>";
+
+// Reads and parses `path` ("-": standard input) and builds its plan. False when the file cannot be
 // read; the plan may still carry errors (check diags).
 bool loadScript(const std::string& path, const PlanOptions& options, Diagnostics& diags, LoadedScript& out);
 

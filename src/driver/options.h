@@ -27,6 +27,8 @@ struct RenderOptions : CommonOptions {
     std::string output = "out.png";
     std::vector<std::string> dumps;  // UNIT=file.png
     double time = 0;
+    int frames = 1;   // --frames: a sequence, Timer advancing 1/fps a frame from `time`
+    double fps = 24;  // --fps
     bool timings = false;
     bool health = false;  // print the numeric health of every target
     bool strict = false;  // and exit 1 if any holds NaN, Inf, negatives or values above 65504

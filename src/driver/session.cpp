@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "driver/prepare_script.h"
+#include "driver/script_checks.h"
 
 namespace glimmer {
 
@@ -35,6 +36,7 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
         printDiagnostics(diags, s.loaded.sources, std::cerr);
         return kExitUsage;
     }
+    if (!diags.hasErrors()) warnIfDrawsNothing(s.loaded.plan, diags);
     // --set is checked before any GL work: a typo should not cost a compile.
     s.values.emplace(s.loaded.plan);
     Diagnostics setDiags;

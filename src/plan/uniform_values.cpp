@@ -45,50 +45,96 @@ std::set<int> UniformValues::programsDifferingFrom(const UniformValues& other) c
     return out;
 }
 
-bool UniformValues::applySet(const Plan& plan, const std::string& assignment, Diagnostics& diags) {
+bool UniformValues::applySet(const Plan& plan, const std::string& assignment, Diagnostics& diags,
+                             const std::string& option) {
     auto eq = assignment.find('=');
     if (eq == std::string::npos || eq == 0) {
-        diags.error("--set", {}, fmt::format("'{}' is not of the form name=value", assignment));
+        diags.error(option, {}, fmt::format("'{}' is not of the form name=value", assignment));
         return false;
     }
     std::string name = assignment.substr(0, eq), text = assignment.substr(eq + 1);
-    double value = 0;
-    std::string lowered = text;
-    for (auto& ch : lowered) ch = char(std::tolower(static_cast<unsigned char>(ch)));
-    if (lowered == "true" || lowered == "false") {
-        value = lowered == "true" ? 1 : 0;
-    } else {
-        auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value);
-        if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(value)) {
-            diags.error("--set", {}, fmt::format("'{}' in --set {} is not a number", text, assignment));
-            return false;
+    // One number (or true/false), or several separated by commas: a colour
+    // "1,0,0,1" or a vector.
+    std::vector<double> numbers;
+    size_t start = 0;
+    for (;;) {
+        size_t comma = text.find(',', start);
+        std::string part = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        std::string lowered = part;
+        for (auto& ch : lowered) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+        double value = 0;
+        if (lowered == "true" || lowered == "false") {
+            value = lowered == "true" ? 1 : 0;
+        } else {
+            auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+            if (ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value)) {
+                diags.error(option, {}, fmt::format("'{}' in {} {} is not a number", part, option, assignment));
+                return false;
+            }
         }
+        numbers.push_back(value);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
     }
+    const double value = numbers[0];
     bool found = false, ok = true;
     for (size_t p = 0; p < plan.programs.size(); ++p) {
         for (const auto& u : plan.programs[p].uniforms) {
             if (u.name != name) continue;
             found = true;
+            auto wrongCount = [&](const std::string& wants) {
+                diags.error(plan.scriptFile, u.loc,
+                            fmt::format("{} {}: uniform '{}' of Program {} {}", option, assignment, name,
+                                        plan.programs[p].name, wants));
+                ok = false;
+            };
             if (u.form == UniformSetting::Form::Range) {
+                if (numbers.size() != 1) {
+                    wrongCount("is a range and takes one number");
+                    continue;
+                }
                 if (value < u.min || value > u.max) {
                     diags.error(plan.scriptFile, u.loc,
-                                fmt::format("--set {}={} is outside the range <{} {}> of uniform '{}' in Program {}",
-                                            name, text, u.min, u.max, name, plan.programs[p].name));
+                                fmt::format("{} {}={} is outside the range <{} {}> of uniform '{}' in Program {}",
+                                            option, name, text, u.min, u.max, name, plan.programs[p].name));
                     ok = false;
                     continue;
                 }
                 values_[{int(p), name}] = {value};
             } else if (u.form == UniformSetting::Form::Bool) {
+                if (numbers.size() != 1) {
+                    wrongCount("is a checkbox and takes one value");
+                    continue;
+                }
                 values_[{int(p), name}] = {value != 0 ? 1.0 : 0.0};
+            } else if (u.form == UniformSetting::Form::Color) {
+                if (numbers.size() != 3 && numbers.size() != 4) {
+                    wrongCount("is a colour and takes R,G,B or R,G,B,A");
+                    continue;
+                }
+                std::vector<double> rgba = numbers;
+                if (rgba.size() == 3) rgba.push_back(u.values.size() > 3 ? u.values[3] : 1.0);
+                values_[{int(p), name}] = rgba;
+            } else if (u.form == UniformSetting::Form::Array) {
+                if (numbers.size() != u.values.size()) {
+                    wrongCount(fmt::format("is a vector of {} and takes {} numbers separated by commas",
+                                           u.values.size(), u.values.size()));
+                    continue;
+                }
+                values_[{int(p), name}] = numbers;
             } else {
                 diags.error(plan.scriptFile, u.loc,
-                            fmt::format("--set {}: uniform '{}' of Program {} is not a range or a checkbox",
-                                        name, name, plan.programs[p].name));
+                            fmt::format("{} {}: uniform '{}' of Program {} is a constant (a texture unit or a fixed "
+                                        "number), not a range, checkbox, colour or vector",
+                                        option, name, name, plan.programs[p].name));
                 ok = false;
             }
         }
     }
-    if (!found) diags.warning("--set", {}, fmt::format("no Program sets a uniform named '{}'", name));
+    if (!found) {
+        diags.error(option, {}, fmt::format("no Program sets a uniform named '{}'", name));
+        return false;
+    }
     return ok;
 }
 

@@ -23,10 +23,14 @@ public:
     const std::vector<double>& get(int program, const std::string& name) const;
     const std::map<UniformKey, std::vector<double>>& all() const { return values_; }
 
-    // "name=value": sets every Range or Bool uniform of that name. A value
-    // outside a range is an error naming the range; an unknown name a warning.
+    // "name=value": sets every uniform of that name: a Range or a Bool from
+    // one value, a Color from "r,g,b[,a]", an Array from as many numbers,
+    // comma-separated. A value outside a range is an error naming the range;
+    // an unknown name is an error too. `option` is the command-line option the
+    // assignment came from, for messages ("--set", "--vary").
     // Returns false on error.
-    bool applySet(const Plan& plan, const std::string& assignment, Diagnostics& diags);
+    bool applySet(const Plan& plan, const std::string& assignment, Diagnostics& diags,
+                  const std::string& option = "--set");
 
     void set(int program, const std::string& name, std::vector<double> v) { values_[{program, name}] = std::move(v); }
 

@@ -40,9 +40,18 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         if (!want(2, "set NAME VALUE")) return std::nullopt;
         c.kind = ViewCommand::Kind::Set;
         c.name = args[0];
-        if (!toNumber(args[1], c.value)) {
-            error = "set " + args[0] + ": '" + args[1] + "' is not a number";
-            return std::nullopt;
+        c.text = args[1];
+        // A colour or a vector: numbers separated by commas.
+        std::stringstream parts(args[1] + ",");
+        bool firstPart = true;
+        for (std::string part; std::getline(parts, part, ',');) {
+            double v = 0;
+            if (!toNumber(part, v)) {
+                error = "set " + args[0] + ": '" + args[1] + "' is not a number (or numbers separated by commas)";
+                return std::nullopt;
+            }
+            if (firstPart) c.value = v;
+            firstPart = false;
         }
     } else if (word == "reload") {
         if (!want(0, "reload")) return std::nullopt;

@@ -11,7 +11,8 @@ struct ViewCommand {
     enum class Kind { Set, Reload, Save, Show, Help, Quit };
     Kind kind = Kind::Quit;
     std::string name;   // Set: the uniform; Save: the file
-    double value = 0;   // Set
+    double value = 0;   // Set: the first number
+    std::string text;   // Set: the value as written: a number, true/false, or "r,g,b[,a]" / a vector
     int unit = -1;      // Show: texture unit, -1 for the screen
 };
 

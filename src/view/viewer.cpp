@@ -603,7 +603,9 @@ private:
         case ViewCommand::Kind::Set: {
             if (!s_.good) break;
             Diagnostics d;
-            s_.values->applySet(s_.good->plan, fmt::format("{}={}", c.name, c.value), d);
+            s_.values->applySet(s_.good->plan, c.name + "=" + c.text, d);
+            std::ostringstream out;
+            printDiagnostics(d, s_.good->sources, out);
             for (const auto& diag : d.all()) std::cerr << "glimmer view: " << severityName(diag.severity) << ": " << diag.message << "\n";
             break;
         }

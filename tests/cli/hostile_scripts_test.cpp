@@ -95,9 +95,9 @@ TEST(CliHostile, AHugeProgramConstantIsNotAnIntOverflow) {
     TempDir dir;
     auto s = writeFile(dir, "const.glib", "Vertex " + kData + "plain.vert\nFragment " + kData + "solid.frag" +
                                               "\nProgram P uLevel 1e24\nQuadXY 0 1\n");
-    auto r = runGlimmer({"render", s, "-o", dir.file("o.png"), "--size", "8x8", "--backend", "osmesa"});
+    auto r = runGlimmer({"-q", "render", s, "-o", dir.file("o.png"), "--size", "8x8", "--backend", "osmesa"});
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(r.err, "");
+    EXPECT_EQ(r.err, "");  // -q: errors only, and there are none
 }
 
 TEST(CliHostile, OnlyAHundredDiagnosticsArePrinted) {
@@ -105,10 +105,12 @@ TEST(CliHostile, OnlyAHundredDiagnosticsArePrinted) {
     std::string text;
     for (int i = 0; i < 150; ++i) text += "Frobnicate\n";
     auto s = writeFile(dir, "many.glib", text);
-    auto r = check(s);
+    // -v: every diagnostic, unfolded; still at most 100 of them.
+    auto r = runGlimmer({"-v", "check", s, "--backend", "osmesa"});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(countOf(r.err, ": warning: unknown command 'Frobnicate'"), 100);
-    EXPECT_NE(r.err.find("\n... 50 more diagnostics not shown\n"), std::string::npos) << r.err.substr(r.err.size() - 200);
+    // 150 unknown lines and "draws nothing": 51 not shown.
+    EXPECT_NE(r.err.find("\n... 51 more diagnostics not shown\n"), std::string::npos) << r.err.substr(r.err.size() - 200);
 }
 
 TEST(CliHostile, AMegabyteLineOfBadNumbersDoesNotFlood) {
@@ -116,7 +118,7 @@ TEST(CliHostile, AMegabyteLineOfBadNumbersDoesNotFlood) {
     std::string line = "Translate";
     while (line.size() < 1000000) line += " 1.2.3.4";
     auto s = writeFile(dir, "flood.glib", line + "\n");
-    auto r = runGlimmer({"check", s, "--backend", "osmesa"}, 60);
+    auto r = runGlimmer({"-v", "check", s, "--backend", "osmesa"}, 60);
     EXPECT_FALSE(r.timedOut);
     EXPECT_EQ(r.exitCode, 1);
     EXPECT_LT(r.err.size(), 100000u);
@@ -129,7 +131,8 @@ TEST(CliHostile, TerminalEscapesInTheScriptAreShownEscaped) {
     auto r = check(s);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err, s + ":1:1: warning: unknown command 'Frob\\x1b'; line ignored\n"
-                         "Frob\\x1b]0;owned\\x07 1\n^\n");
+                         "Frob\\x1b]0;owned\\x07 1\n^\n" +
+                         s + ": warning: the script draws nothing; the picture is only its background colour\n");
 }
 
 }  // namespace

@@ -5,6 +5,7 @@
 // tests/common/calibration_scene.h and tests/render/superblur_reference_test.cpp.
 #include <gtest/gtest.h>
 
+#include "app/sheet_layout.h"
 #include "common/calibration_scene.h"
 #include "run_glimmer.h"
 
@@ -54,12 +55,17 @@ TEST(CliReference, SheetCellsMatchTheCpuReference) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     glimmer::Image sheet = load(dir.file("sheet.png"));
     glimmer::RgbImage in = cal::input(dir.path());
-    // Cells of kW x kH with 8 px gaps, each row under a 28 px label.
+    // Where the cells are: the sheet's own layout (tests/cli/sheet_test.cpp
+    // finds them on the sheet independently).
+    glimmer::SheetLayout layout = glimmer::layoutSheet(script.filename().string(), "uAdd", {"0", "1", "4"},
+                                                       "uHalfSize", {"1", "5"}, cal::kW, cal::kH);
+    ASSERT_EQ(sheet.width, layout.width);
+    ASSERT_EQ(sheet.height, layout.height);
     const double adds[] = {0, 1, 4};
     const int halves[] = {1, 5};
     for (int row = 0; row < 2; ++row)
         for (int col = 0; col < 3; ++col) {
-            int x0 = 8 + col * (cal::kW + 8), y0 = 8 + 28 + row * (cal::kH + 8 + 28);
+            auto [x0, y0] = layout.cellOrigin(col, row);
             std::string where;
             EXPECT_LE(cal::maxStepsIn(sheet, x0, y0, cal::expectedScreen(in, halves[row], adds[col]), &where),
                       1 + int(adds[col]))

@@ -34,7 +34,7 @@ const std::string kOwnLines[5] = {
 TEST(CliRender, BloomWritesA64x64PngAndWarnsAboutTheSeedQuirks) {
     TempDir dir;
     auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "64x64", "--set",
-                         "uAdd=2", "--set", "uHalfSize=3", "--backend", "osmesa"});
+                         "uAdd=2", "--set", "uHalfSize=3", "--backend", "osmesa", "-v"});
     ASSERT_FALSE(r.timedOut);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     unsigned w = 0, h = 0;
@@ -91,19 +91,19 @@ TEST(CliRender, SetOnAConstantUniformIsAUsageError) {
                          "--backend", "osmesa"});
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(countOf(r.err, "scripts/bloom.glib:27:5: error: --set BlurUnit: uniform 'BlurUnit' of Program Bloom is "
-                             "not a range or a checkbox\n"),
+                             "a constant (a texture unit or a fixed number), not a range, checkbox, colour or "
+                             "vector\n"),
               1)
         << r.err;
 }
 
-TEST(CliRender, SetOnAnUnknownUniformOnlyWarns) {
+TEST(CliRender, SetOnAnUnknownUniformIsAUsageError) {
     TempDir dir;
     auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "16x16", "--set",
                          "nope=1", "--backend", "osmesa"});
-    EXPECT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(countOf(r.err, "--set: warning: no Program sets a uniform named 'nope'\n"), 1) << r.err;
-    unsigned w = 0, h = 0;
-    EXPECT_TRUE(readPngSize(dir.file("x.png"), w, h));
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(countOf(r.err, "--set: error: no Program sets a uniform named 'nope'\n"), 1) << r.err;
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }
 
 TEST(CliRender, DumpWritesTheBlurTarget) {

@@ -44,6 +44,10 @@ TempDir::~TempDir() {
 }
 
 RunResult runGlimmer(const std::vector<std::string>& args, int timeoutSeconds) {
+    return runGlimmerWithInput(args, "/dev/null", timeoutSeconds);
+}
+
+RunResult runGlimmerWithInput(const std::vector<std::string>& args, const std::string& stdinPath, int timeoutSeconds) {
     TempDir io;
     fs::path outPath = io.path() / "stdout", errPath = io.path() / "stderr";
     std::vector<std::string> argv0{GLIMMER_BIN};
@@ -56,10 +60,11 @@ RunResult runGlimmer(const std::vector<std::string>& args, int timeoutSeconds) {
     pid_t pid = ::fork();
     if (pid < 0) throw std::runtime_error("fork failed");
     if (pid == 0) {
+        if (::chdir(GLIMMER_SOURCE_DIR) != 0) ::_exit(127);  // first: stdinPath may be relative to it
         int out = ::open(outPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         int err = ::open(errPath.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-        int in = ::open("/dev/null", O_RDONLY);
-        if (out < 0 || err < 0 || in < 0 || ::chdir(GLIMMER_SOURCE_DIR) != 0) ::_exit(127);
+        int in = ::open(stdinPath.c_str(), O_RDONLY);
+        if (out < 0 || err < 0 || in < 0) ::_exit(127);
         ::dup2(in, 0);
         ::dup2(out, 1);
         ::dup2(err, 2);

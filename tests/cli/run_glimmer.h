@@ -16,6 +16,10 @@ struct RunResult {
 // Runs GLIMMER_BIN with `args` in the repository root (so script paths and the
 // file names in diagnostics are relative to it). No shell is involved.
 RunResult runGlimmer(const std::vector<std::string>& args, int timeoutSeconds = 60);
+// The same with standard input read from the file `stdinPath` (absolute, or
+// relative to the repository root).
+RunResult runGlimmerWithInput(const std::vector<std::string>& args, const std::string& stdinPath,
+                              int timeoutSeconds = 60);
 
 // A fresh, empty folder under the system temp folder, removed at destruction.
 class TempDir {

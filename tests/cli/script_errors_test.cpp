@@ -74,7 +74,8 @@ TEST(CliScriptErrors, UnknownCommandIsOnlyAWarning) {
     EXPECT_EQ(r.err, cliData("unknown_command.glib") +
                          ":2:1: warning: unknown command 'Frobnicate'; line ignored\n"
                          "Frobnicate 1 2 3\n"
-                         "^\n");
+                         "^\n"
+                         "wrote " + dir.file("out.png") + " (32x32)\n");
     unsigned w = 0, h = 0;
     ASSERT_TRUE(readPngSize(dir.file("out.png"), w, h));
     EXPECT_EQ(w, 32u);

@@ -23,7 +23,7 @@ TEST(CliStandIns, WithoutTheFlagAMissingFileIsAnError) {
 
 TEST(CliStandIns, RenderDrawsACheckerboardAndASphere) {
     TempDir dir;
-    auto r = runGlimmer({"render", cliData("stand_ins.glib"), "-o", dir.file("o.png"), "--size", "128x128",
+    auto r = runGlimmer({"-v", "render", cliData("stand_ins.glib"), "-o", dir.file("o.png"), "--size", "128x128",
                          "--backend", "osmesa", "--stand-ins"});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // One warning per missing file, on the script's line and column.
@@ -51,7 +51,7 @@ TEST(CliStandIns, RenderDrawsACheckerboardAndASphere) {
 }
 
 TEST(CliStandIns, CheckLoadsEveryStandIn) {
-    auto r = runGlimmer({"check", cliData("stand_ins.glib"), "--backend", "osmesa", "--stand-ins"});
+    auto r = runGlimmer({"-v", "check", cliData("stand_ins.glib"), "--backend", "osmesa", "--stand-ins"});
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(countOf(r.err, ": warning: cannot find "), 9) << r.err;
     EXPECT_EQ(countOf(r.err, ": error:"), 0) << r.err;

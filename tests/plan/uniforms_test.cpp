@@ -142,7 +142,7 @@ protected:
         p = plan(dir.script(),
                  "Vertex a.vert\nFragment a.frag\n"
                  "Program One uLevel <0 2 10> uOn <false> ImageUnit 5 uTint {1 0 0}\n"
-                 "Program Two uLevel <-1 0 1> uOn <true>\n");
+                 "Program Two uLevel <-1 0 1> uOn <true> uDir [1 2 3]\n");
         ASSERT_EQ(messages(p.diags), V{});
         ASSERT_EQ(p.plan.programs.size(), 2u);
     }
@@ -234,20 +234,63 @@ TEST_F(SetTest, NotAnAssignment) {
     EXPECT_EQ(errors(d), (V{"'uLevel' is not of the form name=value", "'=3' is not of the form name=value"}));
 }
 
-TEST_F(SetTest, UnknownNameIsAWarning) {
+TEST_F(SetTest, UnknownNameIsAnError) {
     UniformValues v(p.plan);
     Diagnostics d;
-    EXPECT_TRUE(v.applySet(p.plan, "uNope=1", d));
-    EXPECT_EQ(messages(d), V{"0:0: warning: no Program sets a uniform named 'uNope'"});
-    EXPECT_FALSE(d.hasErrors());
+    EXPECT_FALSE(v.applySet(p.plan, "uNope=1", d));
+    EXPECT_EQ(messages(d), V{"0:0: error: no Program sets a uniform named 'uNope'"});
+    ASSERT_EQ(d.all().size(), 1u);
+    EXPECT_EQ(d.all()[0].file, "--set");
+    Diagnostics dv;
+    EXPECT_FALSE(v.applySet(p.plan, "uNope=1", dv, "--vary"));
+    ASSERT_EQ(dv.all().size(), 1u);
+    EXPECT_EQ(dv.all()[0].file, "--vary");
 }
 
 TEST_F(SetTest, ConstantsCannotBeSet) {
     UniformValues v(p.plan);
     Diagnostics d;
     EXPECT_FALSE(v.applySet(p.plan, "ImageUnit=3", d));
-    EXPECT_EQ(errors(d), V{"--set ImageUnit: uniform 'ImageUnit' of Program One is not a range or a checkbox"});
+    EXPECT_EQ(errors(d), V{"--set ImageUnit: uniform 'ImageUnit' of Program One is a constant (a texture unit or a "
+                           "fixed number), not a range, checkbox, colour or vector"});
     EXPECT_EQ(v.get(0, "ImageUnit"), D{5});
+}
+
+TEST_F(SetTest, ColoursTakeThreeOrFourNumbers) {
+    UniformValues v(p.plan);
+    Diagnostics d;
+    EXPECT_TRUE(v.applySet(p.plan, "uTint=0,0.5,1,0.25", d));
+    EXPECT_EQ(v.get(0, "uTint"), (D{0, 0.5, 1, 0.25}));
+    EXPECT_TRUE(v.applySet(p.plan, "uTint=0.5,0,1", d));
+    EXPECT_EQ(v.get(0, "uTint"), (D{0.5, 0, 1, 1}));  // alpha from the script
+    EXPECT_EQ(messages(d), V{});
+    EXPECT_FALSE(v.applySet(p.plan, "uTint=1,0", d));
+    EXPECT_FALSE(v.applySet(p.plan, "uTint=1,0,x", d));
+    EXPECT_EQ(errors(d), (V{"--set uTint=1,0: uniform 'uTint' of Program One is a colour and takes R,G,B or R,G,B,A",
+                           "'x' in --set uTint=1,0,x is not a number"}));
+    EXPECT_EQ(v.get(0, "uTint"), (D{0.5, 0, 1, 1}));
+}
+
+TEST_F(SetTest, VectorsTakeTheirLength) {
+    UniformValues v(p.plan);
+    Diagnostics d;
+    EXPECT_TRUE(v.applySet(p.plan, "uDir=-1,0,2.5", d));
+    EXPECT_EQ(v.get(1, "uDir"), (D{-1, 0, 2.5}));
+    EXPECT_FALSE(v.applySet(p.plan, "uDir=1,2", d));
+    EXPECT_EQ(errors(d), V{"--set uDir=1,2: uniform 'uDir' of Program Two is a vector of 3 and takes 3 numbers "
+                           "separated by commas"});
+    EXPECT_EQ(v.get(1, "uDir"), (D{-1, 0, 2.5}));
+}
+
+TEST_F(SetTest, RangesTakeOneNumber) {
+    UniformValues v(p.plan);
+    Diagnostics d;
+    EXPECT_FALSE(v.applySet(p.plan, "uOn=1,0", d));
+    EXPECT_FALSE(v.applySet(p.plan, "uLevel=1,0", d, "--vary"));
+    EXPECT_EQ(errors(d), (V{"--set uOn=1,0: uniform 'uOn' of Program One is a checkbox and takes one value",
+                           "--set uOn=1,0: uniform 'uOn' of Program Two is a checkbox and takes one value",
+                           "--vary uLevel=1,0: uniform 'uLevel' of Program One is a range and takes one number",
+                           "--vary uLevel=1,0: uniform 'uLevel' of Program Two is a range and takes one number"}));
 }
 
 }  // namespace

@@ -90,6 +90,10 @@ TEST(ViewCommands, ParsesEveryCommand) {
     EXPECT_EQ(parseViewCommand("show screen", err)->unit, -1);
     EXPECT_EQ(parseViewCommand("quit", err)->kind, ViewCommand::Kind::Quit);
     EXPECT_EQ(parseViewCommand("set uOn true", err)->value, 1.0);
+    auto colour = parseViewCommand("set uColor 1,0.5,0,1", err);
+    ASSERT_TRUE(colour) << err;
+    EXPECT_EQ(colour->text, "1,0.5,0,1");
+    EXPECT_EQ(set->text, "3.5");
 }
 
 TEST(ViewCommands, ErrorsSayWhatIsWrong) {
@@ -99,7 +103,9 @@ TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     EXPECT_FALSE(parseViewCommand("set uAdd", err));
     EXPECT_EQ(err, "usage: set NAME VALUE");
     EXPECT_FALSE(parseViewCommand("set uAdd lots", err));
-    EXPECT_EQ(err, "set uAdd: 'lots' is not a number");
+    EXPECT_EQ(err, "set uAdd: 'lots' is not a number (or numbers separated by commas)");
+    EXPECT_FALSE(parseViewCommand("set uColor 1,0,", err));
+    EXPECT_EQ(err, "set uColor: '1,0,' is not a number (or numbers separated by commas)");
     EXPECT_FALSE(parseViewCommand("show 40", err));
     EXPECT_EQ(err, "show: '40' is not a texture unit (0 to 31) or 'screen'");
     EXPECT_FALSE(parseViewCommand("# a comment", err));
