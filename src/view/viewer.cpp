@@ -5,12 +5,7 @@
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
 
-#include <sys/epoll.h>
-#include <sys/eventfd.h>
-#include <unistd.h>
-
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <iostream>
@@ -27,111 +22,12 @@
 #include "image/text.h"
 #include "plan/dependencies.h"
 #include "view/view_model.h"
+#include "view/wakeups.h"
 
 namespace glimmer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Set by the window's callbacks (chained before ImGui's): something the user
-// did, or the window was exposed, so a frame must be drawn.
-std::atomic<bool> gInput{false};
-// Cleared before GLFW shuts down, so a thread that wakes the loop stops doing so.
-std::atomic<bool> gWindowAlive{false};
-
-void wake() {
-    if (gWindowAlive) glfwPostEmptyEvent();
-}
-
-// Commands arrive from --exec, from standard input (a thread of its own, so
-// a silent stdin never blocks the window) and from the panel's buttons.
-class CommandQueue {
-public:
-    void push(std::string line) {
-        {
-            std::lock_guard<std::mutex> lock(mutex_);
-            lines_.push_back(std::move(line));
-        }
-        wake();  // the loop sleeps in glfwWaitEvents until something happens
-    }
-    std::vector<std::string> take() {
-        std::lock_guard<std::mutex> lock(mutex_);
-        std::vector<std::string> out(lines_.begin(), lines_.end());
-        lines_.clear();
-        return out;
-    }
-
-private:
-    std::mutex mutex_;
-    std::deque<std::string> lines_;
-};
-
-// Sleeps on the file watch's inotify descriptor and wakes the window's
-// loop when the kernel reports a change; the loop itself reads the events.
-// Edge-triggered, so unread events do not make it spin.
-class FileWaker {
-public:
-    explicit FileWaker(int notifyFd) {
-        if (notifyFd < 0) return;
-        epoll_ = ::epoll_create1(EPOLL_CLOEXEC);
-        stop_ = ::eventfd(0, EFD_CLOEXEC);
-        if (epoll_ < 0 || stop_ < 0) return;
-        epoll_event ev{};
-        ev.events = EPOLLIN | EPOLLET;
-        ev.data.fd = notifyFd;
-        ::epoll_ctl(epoll_, EPOLL_CTL_ADD, notifyFd, &ev);
-        ev.events = EPOLLIN;
-        ev.data.fd = stop_;
-        ::epoll_ctl(epoll_, EPOLL_CTL_ADD, stop_, &ev);
-        thread_ = std::thread([this] {
-            for (;;) {
-                epoll_event got[2];
-                int n = ::epoll_wait(epoll_, got, 2, -1);
-                for (int i = 0; i < n; ++i)
-                    if (got[i].data.fd == stop_) return;
-                if (n > 0) wake();
-            }
-        });
-    }
-    ~FileWaker() {
-        if (thread_.joinable()) {
-            std::uint64_t one = 1;
-            (void)!::write(stop_, &one, sizeof one);
-            thread_.join();
-        }
-        if (epoll_ >= 0) ::close(epoll_);
-        if (stop_ >= 0) ::close(stop_);
-    }
-
-private:
-    int epoll_ = -1, stop_ = -1;
-    std::thread thread_;
-};
-
-void markInput(GLFWwindow*) { gInput = true; }
-
-// Keys pressed since the last frame, in order. ImGui 1.86 (Debian's) keeps
-// only whether a key is down at the frame: a press and its release handled in
-// one batch of events (a quick tap while a frame renders, xdotool's `key`)
-// would never be seen, so presses are queued here.
-std::vector<int> gKeyPresses;
-
-// Installed before ImGui's backend, which keeps and calls them: any input
-// marks that a frame is due.
-void installWakeCallbacks(GLFWwindow* w) {
-    glfwSetWindowRefreshCallback(w, markInput);
-    glfwSetCursorPosCallback(w, [](GLFWwindow* win, double, double) { markInput(win); });
-    glfwSetMouseButtonCallback(w, [](GLFWwindow* win, int, int, int) { markInput(win); });
-    glfwSetScrollCallback(w, [](GLFWwindow* win, double, double) { markInput(win); });
-    glfwSetKeyCallback(w, [](GLFWwindow* win, int key, int, int action, int) {
-        if (action == GLFW_PRESS) gKeyPresses.push_back(key);
-        markInput(win);
-    });
-    glfwSetCharCallback(w, [](GLFWwindow* win, unsigned) { markInput(win); });
-    glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { markInput(win); });
-    glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { markInput(win); });
-    glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { markInput(win); });
-}
 
 class Viewer {
 public:

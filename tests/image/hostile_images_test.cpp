@@ -2,6 +2,8 @@
 // quickly, without reading past the file or allocating what its header claims.
 #include <gtest/gtest.h>
 
+#include "common/test_folder.h"
+
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -26,14 +28,8 @@ namespace {
 using Bytes = std::vector<std::uint8_t>;
 
 struct Dir {
-    fs::path path;
-    Dir() {
-        path = fs::temp_directory_path() / ("glimmer-hostile-" + std::to_string(::getpid()) + "-" +
-                                            ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(path);
-        fs::create_directories(path);
-    }
-    ~Dir() { fs::remove_all(path); }
+    glimmer::testing::TestFolder folder{"glimmer-hostile-"};
+    fs::path path = folder.path;
     std::string write(const std::string& name, const Bytes& b) const {
         std::string p = (path / name).string();
         std::ofstream(p, std::ios::binary).write(reinterpret_cast<const char*>(b.data()), std::streamsize(b.size()));

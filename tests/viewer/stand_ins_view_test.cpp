@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include "common/test_folder.h"
 #include "viewer_process.h"
 
 namespace fs = std::filesystem;
@@ -16,16 +17,12 @@ using namespace glimmer_viewer;
 namespace {
 
 struct StandInProject {
-    fs::path dir;
+    glimmer::testing::TestFolder folder{"glimmer_standin_view_"};
+    fs::path dir = folder.path;
     StandInProject() {
-        dir = fs::temp_directory_path() / ("glimmer_standin_view_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
         fs::path data = fs::path(GLIMMER_SOURCE_DIR) / "tests/data/cli";
         for (auto f : {"stand_ins.glib", "st.vert", "stand_in.frag"}) fs::copy_file(data / f, dir / f);
     }
-    ~StandInProject() { fs::remove_all(dir); }
 };
 
 TEST(ViewerStandIns, OnByDefaultAndSavesWhatRenderDraws) {

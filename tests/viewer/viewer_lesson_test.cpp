@@ -13,6 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image.h"
+#include "common/test_folder.h"
 #include "viewer_process.h"
 #include "x11_driver.h"
 
@@ -23,12 +24,9 @@ using namespace std::chrono_literals;
 namespace {
 
 struct Project {
-    fs::path dir;
+    glimmer::testing::TestFolder folder{"glimmer_lesson_test_"};
+    fs::path dir = folder.path;
     Project() {
-        dir = fs::temp_directory_path() / ("glimmer_lesson_test_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
         fs::path src(GLIMMER_SOURCE_DIR);
         fs::copy_file(src / "scripts/bloom.glib", dir / "bloom.glib");
         fs::copy_file(src / "scripts/shapes.glib", dir / "shapes.glib");
@@ -36,7 +34,6 @@ struct Project {
             fs::copy_file(src / "shaders" / f, dir / f);
         fs::copy_file(src / "textures/grid.bmp", dir / "grid.bmp");
     }
-    ~Project() { fs::remove_all(dir); }
 };
 
 int glimmer(const std::string& args) {

@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "common/calibration_scene.h"
+#include "common/test_folder.h"
 #include "viewer_process.h"
 
 namespace fs = std::filesystem;
@@ -18,19 +19,15 @@ using namespace glimmer_viewer;
 namespace {
 
 struct Project {
-    fs::path dir;
+    glimmer::testing::TestFolder folder{"glimmer_viewer_test_"};
+    fs::path dir = folder.path;
     Project() {
-        dir = fs::temp_directory_path() / ("glimmer_viewer_test_" + std::to_string(::getpid()) + "_" +
-                                           ::testing::UnitTest::GetInstance()->current_test_info()->name());
-        fs::remove_all(dir);
-        fs::create_directories(dir);
         fs::path src(GLIMMER_SOURCE_DIR);
         fs::copy_file(src / "scripts/bloom.glib", dir / "bloom.glib");
         for (auto f : {"superblur.vert", "superblur.frag", "bloom.vert", "bloom.frag"})
             fs::copy_file(src / "shaders" / f, dir / f);
         fs::copy_file(src / "textures/grid.bmp", dir / "grid.bmp");
     }
-    ~Project() { fs::remove_all(dir); }
 };
 
 int renderPng(const fs::path& script, const std::vector<std::string>& sets, const fs::path& out) {
