@@ -10,6 +10,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "driver/watchdog.h"
 #include "app/help_text.h"
 #include "lang/diagnostics.h"
 #include "view/viewer.h"
@@ -56,10 +57,13 @@ int run(int argc, char** argv) {
         return code == 0 ? kExitOk : kExitUsage;
     }
     if (auto code = applyGlobalOptions(globals)) return *code;
-    if (app.got_subcommand("render")) return runRender(render);
-    if (app.got_subcommand("check")) return runCheck(check);
+    if (app.got_subcommand("render"))
+        return runWithTimeout(render.timeoutSeconds, render.script, [&] { return runRender(render); });
+    if (app.got_subcommand("check"))
+        return runWithTimeout(check.timeoutSeconds, check.script, [&] { return runCheck(check); });
     if (app.got_subcommand("view")) return runView(view);
-    if (app.got_subcommand("sheet")) return runSheet(sheet);
+    if (app.got_subcommand("sheet"))
+        return runWithTimeout(sheet.timeoutSeconds, sheet.script, [&] { return runSheet(sheet); });
     if (app.got_subcommand("tradeoff")) return runTradeoff(tradeoff);
     return kExitUsage;
 }

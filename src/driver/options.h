@@ -21,6 +21,7 @@ struct CommonOptions {
     bool standIns = false;          // --stand-ins: missing images and models are replaced (assets/stand_ins.h)
     bool sandbox = false;           // files only inside the script's folder and -I folders
     std::uint64_t maxMemoryMiB = 0; // 0: the default budget (plan/limits.h)
+    double timeoutSeconds = 0;      // --timeout: the GL work runs in a child stopped after this (0: no limit)
 };
 
 struct RenderOptions : CommonOptions {

@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include "driver/prepare_script.h"
+#include "driver/watchdog.h"
 #include "driver/script_checks.h"
 
 namespace glimmer {
@@ -74,6 +75,10 @@ std::optional<int> openSession(const CommonOptions& options, const std::set<int>
     s.compileMs = std::chrono::duration<double, std::milli>((t2 - t1) + (t0 - l0)).count();
     printDiagnostics(diags, s.loaded.sources, std::cerr);
     if (!ok) return kExitScriptError;
+    if (passesWatched()) {  // --timeout: tell the watchdog which pass draws
+        const Plan* plan = &s.loaded.plan;
+        s.renderer->setPassListener([plan](int pass) { reportPassStart(plan->passes[size_t(pass)].loc); });
+    }
     return std::nullopt;
 }
 

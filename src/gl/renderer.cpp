@@ -135,6 +135,7 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
     for (size_t pi = 0; pi < plan_->passes.size(); ++pi) {
         const Pass& pass = plan_->passes[pi];
         if (!pass.needed || (only && (pi >= only->size() || !(*only)[pi]))) continue;
+        if (passListener_) passListener_(int(pi));
         Target* target = screen_.get();
         for (auto& t : targets_)
             if (t->textures == pass.targets) target = t.get();
@@ -179,6 +180,7 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
             gl_->GenerateMipmap(GL_TEXTURE_2D);
             gl_->BindTexture(GL_TEXTURE_2D, 0);
         }
+        if (passListener_) gl_->Finish();  // the pass is done before the next is announced
         if (gpuTimed) {
             gl_->EndQuery(GL_TIME_ELAPSED);
             pendingQueries.push_back({int(pi), query});

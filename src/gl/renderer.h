@@ -2,6 +2,7 @@
 // check, view, bench) drives a Renderer; every backend only hands it a
 // function that finds GL entry points. It owns every GL object it makes.
 #pragma once
+#include <functional>
 #include <map>
 #include <memory>
 #include <string>
@@ -52,6 +53,11 @@ public:
     // With `timings`, each pass is timed.
     void render(const UniformValues& values, double time, std::vector<PassTiming>* timings = nullptr,
                 const std::vector<bool>* only = nullptr);
+
+    // Called with each pass's index as it starts; while one is set, each
+    // pass is finished before the next starts, so the listener knows which
+    // pass is drawing (--timeout names it; driver/watchdog.h).
+    void setPassListener(std::function<void(int pass)> listener) { passListener_ = std::move(listener); }
 
     // Copies the screen (texture < 0) or a texture target to the window's
     // framebuffer 0, scaled to fit inside w x h and centred.
@@ -138,6 +144,7 @@ private:
     std::vector<std::unique_ptr<Target>> targets_;
     std::unique_ptr<Target> screen_;
     glm::mat4 scene_{1.f};
+    std::function<void(int)> passListener_;
     mutable int gpuTimers_ = -1;  // -1: not asked yet
     unsigned screenTexture_ = 0;
     // Noise2 (unit 2) and Noise3 (unit 3), per resolution; they outlive
