@@ -22,6 +22,8 @@ void addCheckCommand(CLI::App& app, CommonOptions& options);
 struct ViewOptions;
 void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
+void addBatchCommand(CLI::App& app, BatchOptions& options);
+int runBatch(const BatchOptions& options);
 int runCheck(const CommonOptions& options);
 
 // --sandbox and --max-memory (app/safety_options.cpp).

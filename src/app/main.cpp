@@ -28,11 +28,13 @@ int run(int argc, char** argv) {
     ViewOptions view;
     SheetOptions sheet;
     TradeoffOptions tradeoff;
+    BatchOptions batch;
     addRenderCommand(app, render);
     addCheckCommand(app, check);
     addViewCommand(app, view);
     addSheetCommand(app, sheet);
     addTradeoffCommand(app, tradeoff);
+    addBatchCommand(app, batch);
     // `glimmer script.glib` is `glimmer view script.glib`, as glslViewer.
     std::vector<char*> args(argv, argv + argc);
     std::string viewWord = "view";
@@ -44,9 +46,9 @@ int run(int argc, char** argv) {
     // CLI11 reports a mistyped command as "A subcommand is required"; name it.
     std::string first = args.size() > 1 ? args[1] : "";
     if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view" &&
-        first != "sheet" && first != "tradeoff") {
+        first != "sheet" && first != "tradeoff" && first != "batch") {
         std::cerr << "glimmer: error: unknown command '" << first
-                  << "'; the commands are 'render', 'check', 'view', 'sheet' and 'tradeoff'\n"
+                  << "'; the commands are 'render', 'check', 'view', 'sheet', 'tradeoff' and 'batch'\n"
                   << "Run with --help for more information.\n";
         return kExitUsage;
     }
@@ -65,6 +67,7 @@ int run(int argc, char** argv) {
     if (app.got_subcommand("sheet"))
         return runWithTimeout(sheet.timeoutSeconds, sheet.script, [&] { return runSheet(sheet); });
     if (app.got_subcommand("tradeoff")) return runTradeoff(tradeoff);
+    if (app.got_subcommand("batch")) return runBatch(batch);
     return kExitUsage;
 }
 

@@ -40,6 +40,17 @@ struct SheetOptions : CommonOptions {
     std::string output = "sheet.png";
 };
 
+// glimmer batch: scripts from the command line and --list, one PNG each in outputDir.
+struct BatchOptions : CommonOptions {
+    std::vector<std::string> scripts;
+    std::string list;       // a file with one script per line
+    std::string outputDir;  // -o
+    std::string report;     // JSON lines
+    std::string shard;      // I/N
+    int jobs = 2;
+    bool strict = false;
+};
+
 struct TradeoffOptions {
     std::string image;  // empty: the grid pattern, generated at `size`
     std::string size;

@@ -1,0 +1,123 @@
+// glimmer batch: a class of scripts in one call, for graders. The work is
+// driver/batch.h (a pool of workers that each keep a GL context); this file
+// reads the list, shards it, and writes the report.
+#include <charconv>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "driver/batch.h"
+#include "driver/console.h"
+#include "driver/options.h"
+#include "plan/limits.h"
+#include "util/read_file.h"
+
+namespace glimmer {
+namespace {
+
+bool parseShard(const std::string& text, int& shard, int& shards) {
+    auto slash = text.find('/');
+    if (slash == std::string::npos) return false;
+    auto num = [](std::string_view s, int& v) {
+        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        return ec == std::errc() && end == s.data() + s.size();
+    };
+    return num(std::string_view(text).substr(0, slash), shard) && num(std::string_view(text).substr(slash + 1), shards) &&
+           shards >= 1 && shard >= 1 && shard <= shards;
+}
+
+}  // namespace
+
+void addBatchCommand(CLI::App& app, BatchOptions& o) {
+    CLI::App* sub = app.add_subcommand("batch", "render many scripts to PNGs with workers that keep their GL context");
+    sub->add_option("scripts", o.scripts, "the .glib scripts");
+    sub->add_option("--list", o.list, "a file naming one script per line (blank lines and # comments skipped)");
+    sub->add_option("-o,--output", o.outputDir, "the folder for the PNGs (one per script, named after its path)")
+        ->required();
+    sub->add_option("--report", o.report, "write one JSON line per script (path, exit, output, diagnostics, ms, health)");
+    sub->add_option("--jobs", o.jobs, "worker processes")->capture_default_str()->check(CLI::Range(1, 64));
+    sub->add_option("--shard", o.shard, "I/N: render only positions I, I+N, ... of the list (for a job array)");
+    sub->add_option("--size", o.size, "output size WxH (default: each script's WindowSize, else 600x600)");
+    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless")
+        ->capture_default_str()
+        ->check(CLI::IsMember({"auto", "osmesa", "egl", "egl-device", "egl-surfaceless"}));
+    sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
+    sub->add_flag("--strict", o.strict, "a target holding NaN, Inf, negatives or values above 65504 fails the script");
+    addSafetyOptions(sub, o);
+}
+
+int runBatch(const BatchOptions& o) {
+    std::vector<std::string> scripts = o.scripts;
+    if (!o.list.empty()) {
+        std::string text, why;
+        if (!readRegularFile(o.list, kMaxScriptBytes, text, why)) {
+            std::cerr << fmt::format("glimmer: error: --list {}: cannot read it: it {}\n", o.list, why);
+            return kExitUsage;
+        }
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);) {
+            while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
+            if (!line.empty() && line[0] != '#') scripts.push_back(line);
+        }
+    }
+    if (scripts.empty()) {
+        std::cerr << "glimmer: error: batch: no scripts (name them, or give --list FILE)\n";
+        return kExitUsage;
+    }
+    int shard = 1, shards = 1;
+    if (!o.shard.empty() && !parseShard(o.shard, shard, shards)) {
+        std::cerr << fmt::format("glimmer: error: --shard '{}' is not I/N with 1 <= I <= N\n", o.shard);
+        return kExitUsage;
+    }
+    BatchSettings settings;
+    if (!o.size.empty() && !parseSize(o.size, settings.width, settings.height)) {
+        std::cerr << fmt::format("glimmer: error: --size '{}' is not WIDTHxHEIGHT (1 to 16384 each)\n", o.size);
+        return kExitUsage;
+    }
+    std::error_code ec;
+    std::filesystem::create_directories(o.outputDir, ec);
+    if (!std::filesystem::is_directory(o.outputDir)) {
+        std::cerr << fmt::format("glimmer: error: -o {}: cannot make this folder\n", o.outputDir);
+        return kExitUsage;
+    }
+    std::vector<std::string> names = batchOutputNames(scripts);  // from the whole list: the same on every shard
+    std::vector<BatchJob> jobs;
+    for (size_t i = 0; i < scripts.size(); ++i)
+        if (inShard(i, shard, shards))
+            jobs.push_back({scripts[i], (std::filesystem::path(o.outputDir) / names[i]).string()});
+    settings.backend = o.backend;
+    settings.includeDirs = o.includeDirs;
+    settings.sandbox = o.sandbox;
+    settings.maxMemoryMiB = o.maxMemoryMiB;
+    settings.timeoutSeconds = o.timeoutSeconds;
+    settings.strict = o.strict;
+    settings.jobs = o.jobs;
+    Progress progress;
+    auto results = runBatch(jobs, settings, [&](size_t done, size_t total) {
+        progress.update(fmt::format("batch: {}/{} scripts", done, total));
+    });
+    progress.finish();
+    int failed = 0;
+    std::ofstream report;
+    if (!o.report.empty()) {
+        report.open(o.report);
+        if (!report) {
+            std::cerr << fmt::format("glimmer: error: --report {}: cannot write it\n", o.report);
+            return kExitUsage;
+        }
+    }
+    for (const auto& r : results) {
+        failed += r.exitCode != 0;
+        if (report.is_open()) report << r.json << "\n";
+    }
+    reportWrote(fmt::format("{} of {} scripts to {}{}{}", jobs.size() - size_t(failed), jobs.size(), o.outputDir,
+                            failed ? fmt::format(" ({} failed)", failed) : "",
+                            o.report.empty() ? "" : ", report " + o.report));
+    return failed ? kExitScriptError : kExitOk;
+}
+
+}  // namespace glimmer

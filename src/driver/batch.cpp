@@ -1,0 +1,311 @@
+#include "driver/batch.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "backends/context.h"
+#include "driver/numeric_health.h"
+#include "driver/prepare_script.h"
+#include "image/image.h"
+#include "plan/uniform_values.h"
+
+namespace glimmer {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+std::string resultJson(const BatchJob& job, int exitCode, const std::string& diagnostics, const std::string& written,
+                       double prepareMs, double renderMs, double writeMs, const std::string& health) {
+    return fmt::format("{{\"script\": {}, \"exit\": {}, \"output\": {}, \"diagnostics\": {}, "
+                       "\"ms\": {{\"prepare\": {:.2f}, \"render\": {:.2f}, \"write\": {:.2f}}}, \"health\": {}}}",
+                       jsonString(job.script), exitCode, written.empty() ? "null" : jsonString(written),
+                       jsonString(diagnostics), prepareMs, renderMs, writeMs, jsonString(health));
+}
+
+// One script on a worker's context, as `glimmer render` draws it.
+BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* context, const std::string& contextError) {
+    BatchResult r;
+    Diagnostics diags;
+    LoadedScript loaded;
+    std::ostringstream printed;
+    if (!context) {
+        r.exitCode = 1;
+        r.json = resultJson(job, 1, "glimmer: error: " + contextError + "\n", "", 0, 0, 0, "unchecked");
+        return r;
+    }
+    ScriptRequest request;
+    request.script = job.script;
+    request.plan.includeDirs = s.includeDirs;
+    request.plan.width = s.width;
+    request.plan.height = s.height;
+    request.plan.sandbox = s.sandbox;
+    if (s.maxMemoryMiB > 0) request.plan.maxMemoryBytes = s.maxMemoryMiB << 20;
+    auto t0 = Clock::now();
+    auto renderer = prepareScript(request, [&](const char* n) { return context->getProcAddress(n); }, diags, loaded);
+    double prepareMs = msSince(t0);
+    printDiagnostics(diags, loaded.sources, printed);
+    if (!renderer) {
+        r.exitCode = 1;
+        r.json = resultJson(job, 1, printed.str(), "", prepareMs, 0, 0, "unchecked");
+        return r;
+    }
+    auto t1 = Clock::now();
+    renderer->render(UniformValues(loaded.plan), 0);
+    Image screen = renderer->readScreen();
+    double renderMs = msSince(t1);
+    std::string health = "unchecked";
+    if (s.strict) {
+        bool bad = false;
+        for (const auto& h : measureHealth(*renderer, loaded.plan)) bad |= h.bad();
+        health = bad ? "bad" : "ok";
+        if (bad) printed << "glimmer: error: --strict: a target holds NaN, Inf, negative or out-of-range values\n";
+    }
+    auto t2 = Clock::now();
+    std::string why;
+    bool wrote = health != "bad" && writePng(job.output, screen, why);
+    if (health != "bad" && !wrote) printed << "glimmer: error: " << why << "\n";
+    r.exitCode = wrote ? 0 : 1;
+    r.json = resultJson(job, r.exitCode, printed.str(), wrote ? job.output : "", prepareMs, renderMs, msSince(t2), health);
+    return r;
+}
+
+bool writeAll(int fd, const void* data, size_t n) {
+    const char* p = static_cast<const char*>(data);
+    while (n > 0) {
+        ssize_t w = ::write(fd, p, n);
+        if (w <= 0) return false;
+        p += w;
+        n -= size_t(w);
+    }
+    return true;
+}
+
+bool readAll(int fd, void* data, size_t n) {
+    char* p = static_cast<char*>(data);
+    while (n > 0) {
+        ssize_t got = ::read(fd, p, n);
+        if (got <= 0) return false;
+        p += got;
+        n -= size_t(got);
+    }
+    return true;
+}
+
+// A worker: reads job indices, renders, writes back {index, exit, length, json}.
+[[noreturn]] void workerMain(int jobsFd, int resultsFd, const std::vector<BatchJob>& jobs, const BatchSettings& s) {
+    std::unique_ptr<GlContext> context;
+    std::string contextError;
+    bool tried = false;
+    std::uint32_t index = 0;
+    while (readAll(jobsFd, &index, sizeof index)) {
+        if (!tried) {  // made on the first job, kept for every later one
+            tried = true;
+            BackendChoice choice;
+            if (parseBackend(s.backend, choice)) context = createContext(choice, contextError);
+            else contextError = "unknown backend '" + s.backend + "'";
+        }
+        BatchResult r;
+        try {
+            r = renderOne(jobs[index], s, context.get(), contextError);
+        } catch (const std::exception& e) {
+            r.exitCode = 1;
+            r.json = resultJson(jobs[index], 1, std::string("glimmer: error: ") + e.what() + "\n", "", 0, 0, 0, "unchecked");
+        }
+        std::int32_t code = r.exitCode;
+        std::uint32_t length = std::uint32_t(r.json.size());
+        if (!writeAll(resultsFd, &index, sizeof index) || !writeAll(resultsFd, &code, sizeof code) ||
+            !writeAll(resultsFd, &length, sizeof length) || !writeAll(resultsFd, r.json.data(), r.json.size()))
+            break;
+    }
+    std::fflush(nullptr);
+    ::_exit(0);
+}
+
+struct Worker {
+    pid_t pid = -1;
+    int toWorker = -1, fromWorker = -1;
+    long job = -1;  // the job it is rendering; -1: idle
+    Clock::time_point started;
+};
+
+// `others`: the workers already running. A child inherits their pipe ends
+// and must close them, or a worker the parent lets go never sees the end of
+// its job pipe (another worker would still hold it open).
+Worker spawn(const std::vector<BatchJob>& jobs, const BatchSettings& s, const std::vector<Worker>& others) {
+    int down[2], up[2];
+    Worker w;
+    if (::pipe(down) != 0) return w;
+    if (::pipe(up) != 0) {
+        ::close(down[0]);
+        ::close(down[1]);
+        return w;
+    }
+    std::fflush(nullptr);
+    pid_t pid = ::fork();
+    if (pid == 0) {
+        ::close(down[1]);
+        ::close(up[0]);
+        for (const Worker& o : others)
+            if (o.pid > 0) {
+                ::close(o.toWorker);
+                ::close(o.fromWorker);
+            }
+        workerMain(down[0], up[1], jobs, s);
+    }
+    ::close(down[0]);
+    ::close(up[1]);
+    w.pid = pid;
+    w.toWorker = down[1];
+    w.fromWorker = up[0];
+    return w;
+}
+
+void retire(Worker& w, bool kill) {
+    if (w.pid > 0) {
+        if (kill) ::kill(w.pid, SIGKILL);
+        ::close(w.toWorker);
+        ::close(w.fromWorker);
+        int status = 0;
+        ::waitpid(w.pid, &status, 0);
+    }
+    w = Worker{};
+}
+
+}  // namespace
+
+bool inShard(size_t index, int shard, int shards) {
+    return shards >= 1 && shard >= 1 && shard <= shards && int(index % size_t(shards)) == shard - 1;
+}
+
+std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts) {
+    std::vector<std::string> out;
+    std::set<std::string> used;
+    for (const auto& s : scripts) {
+        std::string base = s;
+        if (base.size() > 5 && base.compare(base.size() - 5, 5, ".glib") == 0) base.resize(base.size() - 5);
+        while (base.rfind("./", 0) == 0) base.erase(0, 2);
+        std::string name;
+        for (char c : base) {
+            bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
+                         c == '_' || c == '.';
+            name += plain ? c : '_';
+        }
+        while (!name.empty() && (name.front() == '_' || name.front() == '.')) name.erase(0, 1);
+        if (name.empty()) name = "script";
+        std::string unique = name;
+        for (int k = 2; used.count(unique); ++k) unique = fmt::format("{}-{}", name, k);
+        used.insert(unique);
+        out.push_back(unique + ".png");
+    }
+    return out;
+}
+
+std::string jsonString(const std::string& text) {
+    std::string out = "\"";
+    for (unsigned char c : text) {
+        switch (c) {
+        case '"': out += "\\\""; break;
+        case '\\': out += "\\\\"; break;
+        case '\n': out += "\\n"; break;
+        case '\t': out += "\\t"; break;
+        case '\r': out += "\\r"; break;
+        default:
+            if (c < 0x20) out += fmt::format("\\u{:04x}", c);
+            else out += char(c);
+        }
+    }
+    return out + "\"";
+}
+
+std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const BatchSettings& s,
+                                  const std::function<void(size_t, size_t)>& progress) {
+    std::vector<BatchResult> results(jobs.size());
+    std::vector<bool> done(jobs.size(), false);
+    size_t next = 0, finished = 0;
+    ::signal(SIGPIPE, SIG_IGN);  // a worker that died mid-job must not take the parent with it
+    std::vector<Worker> workers(size_t(std::max(1, std::min<int>(s.jobs, int(jobs.size())))));
+    auto fail = [&](long job, const std::string& why) {
+        const BatchJob& j = jobs[size_t(job)];
+        results[size_t(job)] = {1, resultJson(j, 1, why, "", 0, 0, 0, "unchecked")};
+        done[size_t(job)] = true;
+        ++finished;
+        if (progress) progress(finished, jobs.size());
+    };
+    auto assign = [&](Worker& w) {
+        if (next >= jobs.size()) return;
+        if (w.pid <= 0) w = spawn(jobs, s, workers);
+        if (w.pid <= 0) return;
+        std::uint32_t index = std::uint32_t(next);
+        if (!writeAll(w.toWorker, &index, sizeof index)) {
+            retire(w, true);
+            return;
+        }
+        w.job = long(next++);
+        w.started = Clock::now();
+    };
+    for (auto& w : workers) assign(w);
+    while (finished < jobs.size()) {
+        std::vector<pollfd> fds;
+        for (auto& w : workers) fds.push_back({w.pid > 0 ? w.fromWorker : -1, POLLIN, 0});
+        ::poll(fds.data(), fds.size(), 50);
+        for (size_t k = 0; k < workers.size(); ++k) {
+            Worker& w = workers[k];
+            if (w.pid <= 0) {
+                if (next < jobs.size()) assign(w);
+                continue;
+            }
+            if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
+                std::uint32_t index = 0, length = 0;
+                std::int32_t code = 0;
+                std::string json;
+                bool ok = readAll(w.fromWorker, &index, sizeof index) && readAll(w.fromWorker, &code, sizeof code) &&
+                          readAll(w.fromWorker, &length, sizeof length) && length < (64u << 20);
+                if (ok) {
+                    json.resize(length);
+                    ok = readAll(w.fromWorker, json.data(), length) && long(index) == w.job;
+                }
+                if (ok) {
+                    results[index] = {code, json};
+                    done[index] = true;
+                    ++finished;
+                    if (progress) progress(finished, jobs.size());
+                    w.job = -1;
+                    if (next < jobs.size()) assign(w);
+                    else retire(w, false);
+                } else {
+                    long job = w.job;
+                    retire(w, true);
+                    if (job >= 0 && !done[size_t(job)])
+                        fail(job, jobs[size_t(job)].script + ": error: the renderer crashed while drawing this script\n");
+                    if (next < jobs.size()) assign(w);
+                }
+                continue;
+            }
+            if (w.job >= 0 && s.timeoutSeconds > 0 &&
+                std::chrono::duration<double>(Clock::now() - w.started).count() > s.timeoutSeconds) {
+                long job = w.job;
+                retire(w, true);
+                fail(job, fmt::format("{}: error: stopped after {:g} s (--timeout {:g})\n", jobs[size_t(job)].script,
+                                      s.timeoutSeconds, s.timeoutSeconds));
+                if (next < jobs.size()) assign(w);
+            }
+        }
+    }
+    for (auto& w : workers) retire(w, false);
+    return results;
+}
+
+}  // namespace glimmer

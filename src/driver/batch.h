@@ -1,0 +1,56 @@
+// glimmer batch: many scripts rendered by a pool of worker processes, each
+// keeping one GL context for every script it renders (a context and the
+// driver's start-up cost more than a small script's whole render).
+//
+// Contract:
+//   - Results come back in the order of the jobs, one per job, whatever
+//     happens to a worker: a script that crashes its worker or runs past
+//     the time limit is a failed result and the worker is replaced; no
+//     other script is lost.
+//   - The parent makes no GL context; workers are forked before any.
+//   - shardOf is a pure function of the position in the list, so N machines
+//     given the same list and I = 1..N render each script exactly once.
+#pragma once
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace glimmer {
+
+struct BatchJob {
+    std::string script;  // the .glib file
+    std::string output;  // the PNG to write
+};
+
+struct BatchSettings {
+    std::string backend = "auto";
+    std::vector<std::string> includeDirs;
+    int width = 0, height = 0;     // 0: the script's size
+    bool sandbox = false;
+    std::uint64_t maxMemoryMiB = 0;
+    double timeoutSeconds = 0;     // per script; 0: none
+    bool strict = false;           // a target with NaN, Inf, negatives or out-of-range values fails the script
+    int jobs = 2;                  // worker processes
+};
+
+struct BatchResult {
+    int exitCode = 0;              // as `glimmer render` would exit
+    std::string json;              // one JSON object: script, exit, output, diagnostics, ms, health
+};
+
+// Renders every job; `progress(done, total)` after each. Never throws.
+std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const BatchSettings& settings,
+                                  const std::function<void(size_t, size_t)>& progress);
+
+// Whether position `index` of the list belongs to shard `shard` (1-based) of `shards`.
+bool inShard(size_t index, int shard, int shards);
+
+// One PNG name per script, derived from its path ("class/alice/bloom.glib"
+// -> "class_alice_bloom.png"), made unique with "-2", "-3", ... in list order.
+std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts);
+
+// `text` as a JSON string literal, quotes included.
+std::string jsonString(const std::string& text);
+
+}  // namespace glimmer

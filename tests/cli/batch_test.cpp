@@ -1,0 +1,104 @@
+// glimmer batch: every script gets its PNG or a failed line in the report,
+// a runaway script costs its own time limit and nothing else, and shards
+// partition the list exactly.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "run_glimmer.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using glimmer_cli::countOf;
+using glimmer_cli::runGlimmer;
+using glimmer_cli::TempDir;
+
+std::string readAll(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+
+std::vector<std::string> lines(const std::string& text) {
+    std::vector<std::string> out;
+    std::istringstream in(text);
+    for (std::string l; std::getline(in, l);) out.push_back(l);
+    return out;
+}
+
+// A small script that draws a colour given by its number, so every PNG differs.
+std::string writeSolid(const TempDir& dir, const std::string& name, int k) {
+    std::ofstream(dir.file(name)) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nColor " << (k % 3 == 0)
+                                  << " " << (k % 3 == 1) << " " << (k % 3 == 2) << "\nQuadXY 0 1\n";
+    return dir.file(name);
+}
+
+TEST(CliBatch, EachScriptIsRenderedOrReportedAndARunawayCostsOnlyItself) {
+    TempDir dir;
+    std::string good = writeSolid(dir, "good.glib", 0);
+    std::ofstream(dir.file("broken.glib")) << "Ortho -1 1 -1\n";
+    // One pass of a few billion sines per pixel: minutes on llvmpipe.
+    std::string body;
+    for (int k = 0; k < 40; ++k) body += "        a = sin(a * 1.0001 + float(i) * 1e-5 + vST.s + " + std::to_string(k) + ".0);\n";
+    std::ofstream(dir.file("st.vert")) << "#version 330 compatibility\nout vec2 vST;\nvoid main() {\n"
+                                          "    vST = gl_MultiTexCoord0.st;\n"
+                                          "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n}\n";
+    std::ofstream(dir.file("slow.frag")) << "#version 330 compatibility\nin vec2 vST;\nvoid main() {\n    float a = 0.;\n"
+                                            "    for (int i = 0; i < 60000; ++i) {\n" << body
+                                         << "    }\n    gl_FragColor = vec4(a, 0., 0., 1.);\n}\n";
+    std::ofstream(dir.file("slow.glib")) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nVertex st.vert\n"
+                                            "Fragment slow.frag\nProgram Slow\nQuadXY 0 1\n";
+    std::string other = writeSolid(dir, "other.glib", 1);
+    auto r = runGlimmer({"batch", good, dir.file("broken.glib"), dir.file("slow.glib"), other, "-o", dir.file("out"),
+                         "--report", dir.file("r.jsonl"), "--size", "64x64", "--backend", "osmesa", "--timeout", "2",
+                         "--jobs", "2"}, 60);
+    EXPECT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 1) << r.err;  // some scripts failed
+    auto report = lines(readAll(dir.file("r.jsonl")));
+    ASSERT_EQ(report.size(), 4u);  // one line per script, in the order given
+    EXPECT_NE(report[0].find("\"exit\": 0"), std::string::npos) << report[0];
+    EXPECT_NE(report[1].find("\"exit\": 1"), std::string::npos) << report[1];
+    EXPECT_NE(report[1].find("Ortho takes 4 numbers, got 3"), std::string::npos) << report[1];
+    EXPECT_NE(report[2].find("\"exit\": 1"), std::string::npos) << report[2];
+    EXPECT_NE(report[2].find("stopped after 2 s (--timeout 2)"), std::string::npos) << report[2];
+    EXPECT_NE(report[3].find("\"exit\": 0"), std::string::npos) << report[3];
+    EXPECT_EQ(countOf(r.err, "wrote 2 of 4 scripts to "), 1) << r.err;
+    // What batch wrote is what `glimmer render` writes for the same script.
+    std::vector<std::string> pngs;
+    for (const auto& e : fs::directory_iterator(dir.file("out"))) pngs.push_back(e.path().string());
+    ASSERT_EQ(pngs.size(), 2u);
+    auto ref = runGlimmer({"-q", "render", good, "-o", dir.file("good.png"), "--size", "64x64", "--backend", "osmesa"});
+    ASSERT_EQ(ref.exitCode, 0) << ref.err;
+    int same = 0;
+    for (const auto& p : pngs) same += readAll(p) == readAll(dir.file("good.png"));
+    EXPECT_EQ(same, 1);
+}
+
+TEST(CliBatch, ShardsPartitionTheListExactly) {
+    TempDir dir;
+    std::ofstream list(dir.file("class.txt"));
+    list << "# a class of seven\n";
+    for (int k = 0; k < 7; ++k) list << writeSolid(dir, "s" + std::to_string(k) + ".glib", k) << "\n";
+    list.close();
+    std::multiset<std::string> all;
+    for (int shard = 1; shard <= 3; ++shard) {
+        std::string out = dir.file("shard" + std::to_string(shard));
+        auto r = runGlimmer({"-q", "batch", "--list", dir.file("class.txt"), "--shard", std::to_string(shard) + "/3",
+                             "-o", out, "--size", "16x16", "--backend", "osmesa"}, 60);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        for (const auto& e : fs::directory_iterator(out)) all.insert(e.path().filename().string());
+    }
+    std::set<std::string> distinct(all.begin(), all.end());
+    EXPECT_EQ(all.size(), 7u);       // every script once...
+    EXPECT_EQ(distinct.size(), 7u);  // ...and none twice
+    auto bad = runGlimmer({"batch", "--list", dir.file("class.txt"), "--shard", "4/3", "-o", dir.file("x")});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_EQ(bad.err, "glimmer: error: --shard '4/3' is not I/N with 1 <= I <= N\n");
+}
+
+}  // namespace
