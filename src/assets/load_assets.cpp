@@ -1,10 +1,13 @@
 #include "assets/assets.h"
 
 
+#include <set>
+
 #include <fmt/format.h>
 
 #include "assets/gs_compat.h"
 #include "assets/stand_ins.h"
+#include "shader/precision_strip.h"
 #include "image/cubemap.h"
 #include "plan/limits.h"
 #include "util/read_file.h"
@@ -70,6 +73,22 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
         }
     }
     adaptGeometryShaders(plan, out, diags);  // NVIDIA-era geometry shaders -> standard GLSL
+    // ES precision qualifiers before GLSL 1.30, which NVIDIA accepts and Mesa
+    // refuses; they mean nothing on desktop GL. One warning per file.
+    std::set<std::string> stripped;
+    for (size_t i = 0; i < plan.programs.size(); ++i)
+        for (size_t k = 0; k < plan.programs[i].stages.size() && k < out.shaderTexts[i].size(); ++k) {
+            auto& text = out.shaderTexts[i][k];
+            if (!text) continue;
+            PrecisionStripResult r = stripPrecisionQualifiers(*text);
+            if (!r.changed()) continue;
+            *text = std::move(r.text);
+            const ShaderStage& stage = plan.programs[i].stages[k];
+            if (stripped.insert(stage.path).second)
+                diags.warning(stage.path, {r.firstLine, 1},
+                              "precision qualifiers (OpenGL ES; NVIDIA accepts them) removed: GLSL before 1.30 "
+                              "has none, and on desktop OpenGL they change nothing");
+        }
     return diags.errorCount() == errorsBefore;
 }
 

@@ -111,6 +111,9 @@ private:
     void uploadTextures(const Plan& plan, const Assets& assets);
     void uploadMeshes(const Plan& plan, const Assets& assets);
     void buildPrograms(const Plan& plan, const Assets& assets, Diagnostics& diags);
+    // Samplers that read a unit holding another kind of texture (they read
+    // black): warned on the Program line.
+    void warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& diags);
     // Shapes a program cannot draw (GL would refuse them with an error): warned, not drawn.
     void warnUndrawable(const Plan& plan, bool everything, Diagnostics& diags);
     // One framebuffer per distinct set of textures written at once.

@@ -69,10 +69,21 @@ inline Image flipRows(Image img) {
     return img;
 }
 
-// Every texture is sampled the same way: linear, and OpenGL's default wrap
-// (cube maps clamp, so a face's edge does not blend in its opposite edge).
-inline void textureParameters(const GlApi& gl, GLenum target = GL_TEXTURE_2D) {
-    GLint wrap = target == GL_TEXTURE_CUBE_MAP ? GL_CLAMP_TO_EDGE : GL_REPEAT;
+// Every texture is sampled linearly; it wraps as the script's Wrap said
+// (OpenGL's default GL_REPEAT without one). Cube maps always clamp, so a
+// face's edge does not blend in its opposite edge.
+inline GLint glWrap(TextureDecl::Wrap w) {
+    switch (w) {
+    case TextureDecl::Wrap::Repeat: return GL_REPEAT;
+    case TextureDecl::Wrap::Clamp: return GL_CLAMP_TO_EDGE;
+    case TextureDecl::Wrap::Mirror: return GL_MIRRORED_REPEAT;
+    }
+    return GL_REPEAT;
+}
+
+inline void textureParameters(const GlApi& gl, GLenum target = GL_TEXTURE_2D,
+                              TextureDecl::Wrap how = TextureDecl::Wrap::Repeat) {
+    GLint wrap = target == GL_TEXTURE_CUBE_MAP ? GL_CLAMP_TO_EDGE : glWrap(how);
     gl.TexParameteri(target, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     gl.TexParameteri(target, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     gl.TexParameteri(target, GL_TEXTURE_WRAP_S, wrap);

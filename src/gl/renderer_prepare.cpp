@@ -3,6 +3,8 @@
 #include "gl/renderer_internal.h"
 #include "gl/clear_texture.h"
 
+#include <tuple>
+
 #include <fmt/format.h>
 
 namespace glimmer {
@@ -19,6 +21,7 @@ bool Renderer::prepare(const Plan& plan, const Assets& assets, Diagnostics& diag
     gl_->Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
     uploadMeshes(plan, assets);
     buildPrograms(plan, assets, diags);
+    warnSamplerKinds(plan, everything, diags);
     warnUndrawable(plan, everything, diags);
     makeTargets(plan, everything, diags);
     makeScreen(plan, diags);
@@ -45,7 +48,7 @@ void Renderer::uploadTextures(const Plan& plan, const Assets& assets) {
         unsigned id = 0;
         gl_->GenTextures(1, &id);
         gl_->BindTexture(target, id);
-        textureParameters(*gl_, target);
+        textureParameters(*gl_, target, t.wrap);
         gl_->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
         TextureObject obj{id, target, t.width, t.height};
         if (t.kind == TextureDecl::Kind::Cube) {
@@ -170,6 +173,59 @@ void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics
             }
         }
         programs_[i] = std::move(p);
+    }
+}
+
+namespace {
+
+const char* kindPhrase(TextureDecl::Kind k) {
+    switch (k) {
+    case TextureDecl::Kind::Tex2D: return "a 2-D texture";
+    case TextureDecl::Kind::Tex3D: return "a 3-D texture";
+    case TextureDecl::Kind::Cube: return "a cube map";
+    }
+    return "a texture";
+}
+
+}  // namespace
+
+void Renderer::warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& diags) {
+    // Each sampler's unit as the script set it (unset: unit 0). The unit
+    // holds, for each draw, the texture bound there last; its other targets
+    // are emptied (drawStep), so a sampler of another kind reads black.
+    std::set<std::tuple<int, std::string, int>> told;  // program, sampler, texture
+    for (const auto& pass : plan.passes) {
+        if (!pass.needed && !everything) continue;
+        for (const auto& st : pass.steps) {
+            if (st.kind != Step::Kind::Draw || st.draw.program < 0) continue;
+            const Program* prog = programs_[size_t(st.draw.program)].get();
+            if (!prog) continue;
+            const ProgramDecl& decl = plan.programs[size_t(st.draw.program)];
+            for (size_t k = 0; k < prog->uniforms.size(); ++k) {
+                const ActiveUniform& u = prog->uniforms[k];
+                const char* typeName = samplerTypeName(u.type);
+                if (!typeName) continue;
+                const UniformSetting* setting = prog->settings[k];
+                // The built-in noise reads its own texture, unless one of its kind is there.
+                if (!setting && ((u.name == "Noise2" && prog->noise2) || (u.name == "Noise3" && prog->noise3))) continue;
+                int unit = 0;
+                if (setting) {
+                    if (setting->values.empty()) continue;
+                    double v = std::round(setting->values[0]);
+                    if (v < 0 || v > 31) continue;
+                    unit = int(v);
+                }
+                auto on = st.draw.units.find(unit);
+                if (on == st.draw.units.end()) continue;
+                const TextureDecl& tex = plan.textures[size_t(on->second)];
+                TextureDecl::Kind reads{};
+                if (samplerTextureKind(u.type, reads) && reads == tex.kind) continue;
+                if (!told.insert({st.draw.program, u.name, on->second}).second) continue;
+                diags.warning(plan.scriptFile, decl.loc,
+                              fmt::format("Program {}: {} {} reads unit {}, which holds {} (line {}); it reads black",
+                                          decl.name, typeName, u.name, unit, kindPhrase(tex.kind), tex.loc.line));
+            }
+        }
     }
 }
 

@@ -60,6 +60,47 @@ bool isSamplerType(GLenum type) {
     }
 }
 
+const char* samplerTypeName(GLenum type) {
+    switch (type) {
+    case GL_SAMPLER_1D: return "sampler1D";
+    case GL_SAMPLER_2D: return "sampler2D";
+    case GL_SAMPLER_3D: return "sampler3D";
+    case GL_SAMPLER_CUBE: return "samplerCube";
+    case GL_SAMPLER_1D_SHADOW: return "sampler1DShadow";
+    case GL_SAMPLER_2D_SHADOW: return "sampler2DShadow";
+    case GL_SAMPLER_CUBE_SHADOW: return "samplerCubeShadow";
+    case GL_SAMPLER_1D_ARRAY: return "sampler1DArray";
+    case GL_SAMPLER_2D_ARRAY: return "sampler2DArray";
+    case GL_SAMPLER_2D_ARRAY_SHADOW: return "sampler2DArrayShadow";
+    case GL_SAMPLER_2D_RECT: return "sampler2DRect";
+    case GL_SAMPLER_2D_RECT_SHADOW: return "sampler2DRectShadow";
+    case GL_SAMPLER_BUFFER: return "samplerBuffer";
+    case GL_SAMPLER_2D_MULTISAMPLE: return "sampler2DMS";
+    case GL_INT_SAMPLER_2D: return "isampler2D";
+    case GL_INT_SAMPLER_3D: return "isampler3D";
+    case GL_INT_SAMPLER_CUBE: return "isamplerCube";
+    case GL_UNSIGNED_INT_SAMPLER_2D: return "usampler2D";
+    case GL_UNSIGNED_INT_SAMPLER_3D: return "usampler3D";
+    case GL_UNSIGNED_INT_SAMPLER_CUBE: return "usamplerCube";
+    default: return nullptr;
+    }
+}
+
+bool samplerTextureKind(GLenum type, TextureDecl::Kind& out) {
+    switch (type) {
+    case GL_SAMPLER_2D: case GL_SAMPLER_2D_SHADOW: case GL_INT_SAMPLER_2D: case GL_UNSIGNED_INT_SAMPLER_2D:
+        out = TextureDecl::Kind::Tex2D;
+        return true;
+    case GL_SAMPLER_3D: case GL_INT_SAMPLER_3D: case GL_UNSIGNED_INT_SAMPLER_3D:
+        out = TextureDecl::Kind::Tex3D;
+        return true;
+    case GL_SAMPLER_CUBE: case GL_SAMPLER_CUBE_SHADOW: case GL_INT_SAMPLER_CUBE: case GL_UNSIGNED_INT_SAMPLER_CUBE:
+        out = TextureDecl::Kind::Cube;
+        return true;
+    default: return false;
+    }
+}
+
 std::vector<ActiveUniform> activeUniforms(const GlApi& gl, unsigned program) {
     std::vector<ActiveUniform> out;
     GLint count = 0;

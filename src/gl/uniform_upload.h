@@ -43,4 +43,12 @@ std::vector<double> convertUniform(UniformSetting::Form form, const ActiveUnifor
 
 bool isSamplerType(GLenum type);
 
+// A sampler type as GLSL spells it ("sampler2D", "isampler3D",
+// "samplerCubeShadow"); null for a type that is not a sampler.
+const char* samplerTypeName(GLenum type);
+// The kind of texture a sampler type reads: 2-D, 3-D or cube map (each with
+// its int, unsigned and shadow forms); false for the kinds Glimmer never
+// makes (1-D, arrays, rectangles, buffers, multisample) and non-samplers.
+bool samplerTextureKind(GLenum type, TextureDecl::Kind& out);
+
 }  // namespace glimmer

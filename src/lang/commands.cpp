@@ -39,6 +39,7 @@ constexpr CommandRule kRules[] = {
     {CommandKind::Texture3D, "Texture3D", "unit file | unit width height depth", -1, -1, {}},
     {CommandKind::CubeMap, "CubeMap", "unit +x -x +y -y +z -z", -1, -1, {}},
     {CommandKind::RenderToTexture, "RenderToTexture", "[unit ...]", -1, -1, {}},
+    {CommandKind::Wrap, "Wrap", "repeat | clamp | mirror", -1, -1, {}},
     {CommandKind::Vertex, "Vertex", "file", -1, -1, {}},
     {CommandKind::Fragment, "Fragment", "file", -1, -1, {}},
     {CommandKind::Geometry, "Geometry", "file", -1, -1, {}},

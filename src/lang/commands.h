@@ -18,7 +18,7 @@ enum class CommandKind {
     Background, Clear, Color, LineWidth, PointSize, Flat, Smooth, Timer, MessageBox, Gstap,
     Noise2D, Noise3D,
     // textures
-    Texture2D, Texture3D, CubeMap, RenderToTexture,
+    Texture2D, Texture3D, CubeMap, RenderToTexture, Wrap,
     // shaders
     Vertex, Fragment, Geometry, TessControl, TessEvaluation, Program,
     // geometry

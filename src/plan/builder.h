@@ -145,6 +145,9 @@ private:
 
     void renderToTexture(const Command& c);
 
+    // Wrap MODE: the wrap of the textures declared after it.
+    void wrap(const Command& c);
+
     void stage(const Command& c, ShaderStage::Kind kind);
 
     void program(const Command& c);
@@ -180,6 +183,7 @@ private:
     bool flat_ = false;
     bool gstap_ = false;
     std::map<int, int> units_;
+    TextureDecl::Wrap wrap_ = TextureDecl::Wrap::Repeat;  // Wrap in force for new textures
     std::map<ShaderStage::Kind, ShaderStage> stages_;
     int program_ = -1;
     int patchVertices_ = 3;

@@ -67,6 +67,10 @@ struct TextureDecl {
     enum class Format { RGBA8, RGBA16F, RGBA32F, R11F_G11F_B10F };
     Format format = Format::RGBA8;
     bool mips = false;
+    // How lookups outside 0..1 read (Wrap, a Glimmer extension): GL_REPEAT,
+    // GL_CLAMP_TO_EDGE or GL_MIRRORED_REPEAT. Cube maps always clamp.
+    enum class Wrap { Repeat, Clamp, Mirror };
+    Wrap wrap = Wrap::Repeat;
     SourceLoc loc;
     bool renderTarget = false;  // some pass writes it
     bool needsDepth = false;    // some pass writing it draws depth that matters
@@ -153,6 +157,10 @@ Plan buildPlan(const Script& script, const PlanOptions& options, Diagnostics& di
 // "RGBA16F" -> Format (case-insensitive); false for anything else.
 bool parseTextureFormat(const std::string& word, TextureDecl::Format& out);
 const char* textureFormatName(TextureDecl::Format f);
+// "clamp" -> Wrap::Clamp (case-insensitive; also OpenGL's names, with or
+// without GL_: CLAMP_TO_EDGE, MIRRORED_REPEAT); false for anything else.
+bool parseTextureWrap(const std::string& word, TextureDecl::Wrap& out);
+const char* textureWrapName(TextureDecl::Wrap w);
 bool isFloatFormat(TextureDecl::Format f);
 
 // A size written relative to the output: "w", "h", "w/2", "h*2" (integer

@@ -181,6 +181,7 @@ void Builder::command(const Command& c) {
     case CommandKind::Texture3D: texture3D(c); break;
     case CommandKind::CubeMap: cubeMap(c); break;
     case CommandKind::RenderToTexture: renderToTexture(c); break;
+    case CommandKind::Wrap: wrap(c); break;
     case CommandKind::Vertex: stage(c, ShaderStage::Kind::Vertex); break;
     case CommandKind::Fragment: stage(c, ShaderStage::Kind::Fragment); break;
     case CommandKind::Geometry: stage(c, ShaderStage::Kind::Geometry); break;
@@ -394,6 +395,26 @@ const char* textureFormatName(TextureDecl::Format f) {
     case TextureDecl::Format::RGBA16F: return "RGBA16F";
     case TextureDecl::Format::RGBA32F: return "RGBA32F";
     case TextureDecl::Format::R11F_G11F_B10F: return "R11F_G11F_B10F";
+    }
+    return "?";
+}
+
+bool parseTextureWrap(const std::string& word, TextureDecl::Wrap& out) {
+    std::string w = word;
+    for (auto& ch : w) ch = char(std::tolower(static_cast<unsigned char>(ch)));
+    if (w.rfind("gl_", 0) == 0) w = w.substr(3);  // GL_CLAMP_TO_EDGE, as OpenGL spells it
+    if (w == "repeat") out = TextureDecl::Wrap::Repeat;
+    else if (w == "clamp" || w == "clamp_to_edge") out = TextureDecl::Wrap::Clamp;
+    else if (w == "mirror" || w == "mirrored_repeat") out = TextureDecl::Wrap::Mirror;
+    else return false;
+    return true;
+}
+
+const char* textureWrapName(TextureDecl::Wrap w) {
+    switch (w) {
+    case TextureDecl::Wrap::Repeat: return "repeat";
+    case TextureDecl::Wrap::Clamp: return "clamp";
+    case TextureDecl::Wrap::Mirror: return "mirror";
     }
     return "?";
 }

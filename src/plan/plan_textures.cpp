@@ -68,11 +68,12 @@ std::string Builder::findFile(const Arg& a, const char* what, bool& usable) {
 // file many times (one skybox face per quad): one texture per file (per
 // six files for a cube map) is shared.
 void Builder::bindTexture(int unit, TextureDecl t) {
+    if (t.kind != TextureDecl::Kind::Cube) t.wrap = wrap_;
     if (t.source == TextureDecl::Source::File) {
         for (size_t i = 0; i < plan_.textures.size(); ++i) {
             const TextureDecl& o = plan_.textures[i];
             if (o.source == TextureDecl::Source::File && o.kind == t.kind && o.path == t.path &&
-                o.facePaths == t.facePaths && (!options_.standIns || o.faceShown == t.faceShown)) {
+                o.facePaths == t.facePaths && o.wrap == t.wrap && (!options_.standIns || o.faceShown == t.faceShown)) {
                 units_[unit] = int(i);
                 return;
             }
@@ -273,6 +274,17 @@ void Builder::renderToTexture(const Command& c) {
         p.targets.push_back(it->second);
     }
     plan_.passes.push_back(std::move(p));
+}
+
+void Builder::wrap(const Command& c) {
+    TextureDecl::Wrap w{};
+    if (c.args.size() != 1 || c.args[0].kind != Arg::Kind::Word || !parseTextureWrap(c.args[0].text, w)) {
+        diags_.error(file(), c.args.size() == 1 ? c.args[0].loc : c.loc,
+                     fmt::format("Wrap takes one of repeat, clamp or mirror{}",
+                                 c.args.size() == 1 ? fmt::format(", not '{}'", c.args[0].text) : std::string()));
+        return;
+    }
+    wrap_ = w;
 }
 
 }  // namespace plan_detail

@@ -95,4 +95,40 @@ TEST(GlmanCheck, ShapesAProgramCannotDrawAreWarnedNotDrawn) {
                   "drawn"}));
 }
 
+TEST(GlmanCheck, ASamplerOfTheWrongKindForItsUnitIsWarnedOnItsProgramLine) {
+    auto r = runPipeline(script("sampler_kinds"), false, true);
+    EXPECT_TRUE(r->prepared) << r->printed();
+    std::vector<std::string> lines;
+    for (const auto& d : r->diags.all())
+        lines.push_back(std::to_string(d.loc.line) + ": " + std::string(severityName(d.severity)) + ": " + d.message);
+    EXPECT_EQ(lines, (std::vector<std::string>{
+                         // Two draws, one warning.
+                         "10: warning: Program Slice: sampler3D uVol reads unit 5, which holds a 2-D texture "
+                         "(line 5); it reads black",
+                         // Right while unit 7 holds the volume; not once line 15 binds an image there.
+                         "13: warning: Program Right: sampler3D uVol reads unit 7, which holds a 2-D texture "
+                         "(line 15); it reads black",
+                         "18: warning: Program Flat: sampler2D uTex reads unit 6, which holds a cube map "
+                         "(line 7); it reads black"}))
+        << r->printed();
+}
+
+TEST(GlmanCheck, AWrongKindOfSamplerReadsBlack) {
+    std::string dir = dataDir();
+    auto path = std::filesystem::temp_directory_path() / ("glimmer_kinds_" + std::to_string(::getpid()) + ".glib");
+    std::ofstream(path) << "WindowSize 32 32\nOrtho -1 1 -1 1\nTexture2D 5 " << dir << "/grid3.bmp\nVertex " << dir
+                        << "/pass.vert\nFragment " << dir << "/vol.frag\nProgram Slice uVol 5 uR 0.5\nQuadXY 0 2\n";
+    auto r = runPipeline(path.string(), false, true);
+    std::filesystem::remove(path);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              (std::vector<std::string>{"Program Slice: sampler3D uVol reads unit 5, which holds a 2-D texture "
+                                        "(line 3); it reads black"}));
+    for (int y = 0; y < 32; y += 8)
+        for (int x = 0; x < 32; x += 8) {
+            const std::uint8_t* p = pixel(r->screen, x, y);
+            EXPECT_EQ(p[0] + p[1] + p[2], 0) << x << "," << y;
+        }
+}
+
 }  // namespace

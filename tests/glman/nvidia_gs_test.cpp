@@ -160,4 +160,22 @@ TEST(NvidiaGsCheck, ErrorsInATranslatedShaderKeepTheirLines) {
     EXPECT_EQ(errors[1].first, 9);
 }
 
+// ES precision qualifiers in GLSL 1.20, which NVIDIA takes and Mesa refuses
+// ("illegal use of reserved word `precision'"): removed, announced once, and
+// the shader draws.
+TEST(NvidiaLeniency, PrecisionQualifiersBeforeGlsl130AreRemoved) {
+    auto r = runPipeline(nvidia("precision"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    ASSERT_EQ(r->diags.all().size(), 1u) << r->printed();
+    const Diagnostic& d = r->diags.all()[0];
+    EXPECT_EQ(d.severity, Severity::Warning);
+    EXPECT_EQ(std::filesystem::path(d.file).filename(), "precision.frag");
+    EXPECT_EQ(d.loc.line, 4);
+    EXPECT_EQ(d.message, "precision qualifiers (OpenGL ES; NVIDIA accepts them) removed: GLSL before 1.30 has none, "
+                         "and on desktop OpenGL they change nothing");
+    // vST runs 0..1 across the quad: red grows to the right.
+    EXPECT_LT(pixel(r->screen, 2, 16)[0], 32);
+    EXPECT_GT(pixel(r->screen, 29, 16)[0], 200);
+}
+
 }  // namespace

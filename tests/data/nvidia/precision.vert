@@ -1,0 +1,3 @@
+#version 120
+varying vec2 vST;
+void main() { vST = gl_MultiTexCoord0.st; gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }
