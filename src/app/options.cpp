@@ -31,6 +31,8 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     sub->add_option("--fps", o.fps, "frames per second of --frames");
     sub->add_option("--dump", o.dumps, "UNIT=FILE: also write the texture on that unit; .png, .hdr, .pfm or .exr "
                                        "(float targets keep their values in .hdr, .pfm and .exr) (repeatable)");
+    sub->add_option("--png-level", o.pngLevel, "zlib level of the PNG, 0 (fastest, largest) to 9 (smallest, "
+                                               "slowest); the pixels are the same at every level (default 3)");
     sub->add_option("--time", o.time, "seconds since start, for the Timer uniform");
     sub->add_flag("--timings", o.timings, "print start-up, compile, render and write times");
     sub->add_flag("--health", o.health, "report NaN, Inf, negative, above-65504 and clipped values per target");

@@ -43,6 +43,7 @@ struct Options {
     int repeat = 5;
     int halfSize = 11;
     double add = 2;
+    int pngLevel = kDefaultPngLevel;
 };
 
 std::string readText(const std::string& path) {
@@ -234,7 +235,7 @@ int benchBackend(const Options& o, const std::string& backendName) {
         double tRender = msSince(t2);
         auto t3 = Clock::now();
         Image img = r->readScreen();
-        writePng(png, img, why);
+        writePng(png, img, why, o.pngLevel);
         double tWrite = msSince(t3);
         rendererName = r->rendererName();
         gpu = r->gpuTimers();
@@ -325,7 +326,9 @@ int benchBackend(const Options& o, const std::string& backendName) {
     row("start-up (context, GL)", median(startup), median(hwStartup));
     row("compile (load, link)", median(compile), median(hwCompile));
     row("first frame (both passes)", mRender, median(hwFirst));
-    fmt::print("{:<28}{:>12.2f}\n", "write (read back, PNG)", median(write));
+    std::error_code sizeError;
+    fmt::print("{:<28}{:>12.2f}   PNG level {}, {} bytes\n", "write (read back, PNG)", median(write), o.pngLevel,
+               std::filesystem::file_size(png, sizeError));
     fmt::print("steady state, one context, after a warm-up:\n");
     for (const auto& [pass, t] : passTimes) {
         const Pass& p = loaded.plan.passes[size_t(pass)];
@@ -358,6 +361,8 @@ int main(int argc, char** argv) {
     app.add_option("--repeat", o.repeat, "runs per figure, after one warm-up (default 5)");
     app.add_option("--half-size", o.halfSize, "uHalfSize (default 11)");
     app.add_option("--add", o.add, "uAdd (default 2)");
+    app.add_option("--png-level", o.pngLevel, "zlib level of the PNG written, 0 to 9 (default 3)")
+        ->check(CLI::Range(0, 9));
     CLI11_PARSE(app, argc, argv);
     if (o.script.empty()) o.script = std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib";
     int rc = 0;

@@ -31,6 +31,7 @@ struct RenderOptions : CommonOptions {
     int frames = 1;   // --frames: a sequence, Timer advancing 1/fps a frame from `time`
     double fps = 24;  // --fps
     bool timings = false;
+    int pngLevel = 3;     // --png-level: zlib's level for the PNGs, 0 to 9 (image.h's kDefaultPngLevel)
     bool health = false;  // print the numeric health of every target
     bool strict = false;  // and exit 1 if any holds NaN, Inf, negatives or values above 65504
 };

@@ -66,21 +66,7 @@ bool loadImage(const std::string& path, Image& out, std::string& error) {
     return ok;
 }
 
-bool writePng(const std::string& path, const Image& img, std::string& error) {
-    if (img.type != Image::Type::U8) {
-        error = "writePng needs an 8-bit image; " + path + " would be float";
-        return false;
-    }
-    if (img.empty() || img.u8.size() != std::size_t(img.width) * img.height * 4) {
-        error = "writePng: empty or inconsistent image";
-        return false;
-    }
-    if (!stbi_write_png(path.c_str(), img.width, img.height, 4, img.u8.data(), img.width * 4)) {
-        error = "cannot write " + path;
-        return false;
-    }
-    return true;
-}
+// writePng: src/image/png_write.cpp.
 
 std::vector<std::uint8_t> encodeBmp(const Image& img) {
     const std::size_t texels = std::size_t(std::max(img.width, 0)) * std::size_t(std::max(img.height, 0));

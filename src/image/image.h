@@ -33,7 +33,12 @@ bool decodeBmp(const std::vector<std::uint8_t>& bytes, Image& out, std::string& 
 bool decodeTex2D(const std::vector<std::uint8_t>& bytes, Image& out, std::string& error);
 
 // Writers. PNG and BMP take U8 images (RGBA; BMP is written as 24-bit).
-bool writePng(const std::string& path, const Image& img, std::string& error);
+// PNG: `level` is zlib's, 0 (stored, the fastest, the largest) to 9 (the
+// smallest); every level decodes to the same pixels. The default, 3, is the
+// last of zlib's fast levels: on rendered pictures as quick as 1 and about a
+// quarter smaller (docs/PERFORMANCE.md, "Writing the picture").
+constexpr int kDefaultPngLevel = 3;
+bool writePng(const std::string& path, const Image& img, std::string& error, int level = kDefaultPngLevel);
 bool writeBmp(const std::string& path, const Image& img, std::string& error);
 std::vector<std::uint8_t> encodeBmp(const Image& img);
 // Float pictures: Radiance .hdr (RGBE, through stb) and PFM (32-bit float

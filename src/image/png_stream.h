@@ -9,11 +9,13 @@
 
 namespace glimmer {
 
-// The bytes writePng would write; empty for a float or empty image.
-std::vector<std::uint8_t> encodePng(const Image& img);
+// The bytes writePng would write at `level` (0 to 9); empty for a float or
+// empty image, or a level out of range. Rows are filtered and deflated in
+// strips on several threads (src/image/png_write.cpp).
+std::vector<std::uint8_t> encodePng(const Image& img, int level = kDefaultPngLevel);
 
 // Writes the PNG to standard output (binary, flushed). False, with
 // `error`, when the image cannot be encoded or stdout cannot take it.
-bool writePngToStdout(const Image& img, std::string& error);
+bool writePngToStdout(const Image& img, std::string& error, int level = kDefaultPngLevel);
 
 }  // namespace glimmer

@@ -89,6 +89,37 @@ TEST(CliUnix, OutputDashWritesThePngToStdout) {
     EXPECT_EQ(countOf(b.err, "wrote a 24x16 PNG to standard output\n"), 1) << b.err;
 }
 
+TEST(CliUnix, PngLevelChangesTheFileNotThePixels) {
+    TempDir dir;
+    std::vector<std::string> args{"render", "scripts/bloom.glib", "--size", "96x64", "--set", "uAdd=2", "--backend",
+                                  "osmesa"};
+    std::vector<glimmer::Image> images;
+    std::vector<std::size_t> sizes;
+    for (std::string level : {"", "0", "9"}) {
+        auto a = args;
+        const std::string file = dir.file("l" + level + ".png");
+        a.insert(a.end(), {"-o", file});
+        if (!level.empty()) a.insert(a.end(), {"--png-level", level});
+        auto r = runGlimmer(a);
+        ASSERT_EQ(r.exitCode, 0) << r.err;
+        glimmer::Image img;
+        std::string why;
+        ASSERT_TRUE(glimmer::loadImage(file, img, why)) << why;
+        images.push_back(img);
+        sizes.push_back(slurp(file).size());
+    }
+    EXPECT_TRUE(images[0].u8 == images[1].u8);
+    EXPECT_TRUE(images[0].u8 == images[2].u8);
+    EXPECT_GT(sizes[1], 96u * 64u * 4u);  // level 0 stores
+    EXPECT_LT(sizes[2], sizes[0]);
+    // -o - takes the level too: the same bytes as the file.
+    auto pipe = args;
+    pipe.insert(pipe.end(), {"-o", "-", "--png-level", "9"});
+    auto r = runGlimmer(pipe);
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, slurp(dir.file("l9.png")));
+}
+
 TEST(CliUnix, ScriptFromStdinResolvesAgainstTheCurrentFolder) {
     TempDir dir;
     auto r = runGlimmerWithInput({"render", "-", "--size", "8x8", "--set", "uLevel=1", "--backend", "osmesa", "-o",

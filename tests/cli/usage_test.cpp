@@ -75,6 +75,19 @@ TEST(CliUsage, UnknownBackend) {
     EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }
 
+class CliBadPngLevel : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CliBadPngLevel, IsAUsageError) {
+    TempDir dir;
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--png-level", GetParam(),
+                         "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err, std::string("glimmer: error: --png-level ") + GetParam() + " is not between 0 and 9\n");
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
+}
+
+INSTANTIATE_TEST_SUITE_P(Levels, CliBadPngLevel, ::testing::Values("10", "-1", "99"));
+
 class CliBadDump : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CliBadDump, IsAUsageError) {
