@@ -10,6 +10,7 @@
 #include "shader/precision_strip.h"
 #include "image/cubemap.h"
 #include "plan/limits.h"
+#include "plan/memory_budget.h"
 #include "util/read_file.h"
 
 namespace glimmer {
@@ -30,6 +31,13 @@ bool loadTexture(const TextureDecl& t, TextureFile& out, std::string& why) {
     return out.loaded;
 }
 
+std::uint64_t decodedBytes(const TextureFile& f) {
+    auto bytes = [](const Image& i) { return std::uint64_t(i.u8.size()) + std::uint64_t(i.f32.size()) * 4; };
+    std::uint64_t total = bytes(f.image) + std::uint64_t(f.volume.u8.size()) + std::uint64_t(f.volume.f32.size()) * 4;
+    for (const auto& face : f.faces) total += bytes(face);
+    return total;
+}
+
 // Only a regular file, and never more than kMaxShaderBytes (util/read_file.h).
 std::optional<std::string> readShader(const ShaderStage& stage, std::string& why) {
     std::string text;
@@ -47,12 +55,22 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
     out.meshes.assign(plan.meshes.size(), std::nullopt);
     out.shaderTexts.assign(plan.programs.size(), {});
 
+    // Image files count against --max-memory with what the plan declares;
+    // each was already bounded by the image limits before it was decoded.
+    std::uint64_t total = plannedBytes(plan);
     for (size_t i = 0; i < plan.textures.size(); ++i) {
         if (!out.used.textures[i]) continue;
         const TextureDecl& t = plan.textures[i];
         std::string why;
-        if (!loadTexture(t, out.textures[i], why))
+        if (!loadTexture(t, out.textures[i], why)) {
             diags.error(file, t.loc, fmt::format("cannot load '{}': {}", t.shown, why));
+            continue;
+        }
+        total += decodedBytes(out.textures[i]);
+        if (plan.maxMemoryBytes > 0 && total > plan.maxMemoryBytes) {
+            reportOverBudget(plan, t.loc, total, diags);
+            out.textures[i] = {};
+        }
     }
     for (size_t i = 0; i < plan.meshes.size(); ++i) {
         if (!out.used.meshes[i]) continue;

@@ -17,15 +17,31 @@ std::uint64_t textureBytes(const TextureDecl& t) {
     return bytes;
 }
 
+namespace {
+std::uint64_t mib(std::uint64_t b) { return (b + (1u << 20) - 1) >> 20; }
+std::uint64_t screenBytes(const Plan& plan) {
+    return std::uint64_t(plan.width) * std::uint64_t(plan.height) * 8;  // colour and depth
+}
+}  // namespace
+
+std::uint64_t plannedBytes(const Plan& plan) {
+    std::uint64_t total = screenBytes(plan);
+    for (const auto& t : plan.textures) total += textureBytes(t);
+    return total;
+}
+
+void reportOverBudget(const Plan& plan, SourceLoc loc, std::uint64_t total, Diagnostics& diags) {
+    diags.error(plan.scriptFile, loc,
+                fmt::format("textures and render targets need {} MiB by this line, more than the memory "
+                            "budget of {} MiB (--max-memory)", mib(total), plan.maxMemoryBytes >> 20));
+}
+
 void checkMemoryBudget(const Plan& plan, std::uint64_t budget, Diagnostics& diags) {
-    auto mib = [](std::uint64_t b) { return (b + (1u << 20) - 1) >> 20; };
-    std::uint64_t total = std::uint64_t(plan.width) * std::uint64_t(plan.height) * 8;  // the screen, colour and depth
+    std::uint64_t total = screenBytes(plan);
     for (const auto& t : plan.textures) {
         total += textureBytes(t);
         if (total > budget) {
-            diags.error(plan.scriptFile, t.loc,
-                        fmt::format("textures and render targets need {} MiB by this line, more than the memory "
-                                    "budget of {} MiB (--max-memory)", mib(total), budget >> 20));
+            reportOverBudget(plan, t.loc, total, diags);
             return;
         }
     }

@@ -18,4 +18,11 @@ std::uint64_t textureBytes(const TextureDecl& t);
 // that takes the total past `budget` is an error on its line.
 void checkMemoryBudget(const Plan& plan, std::uint64_t budget, Diagnostics& diags);
 
+// What the plan declares (the screen and every empty texture and target):
+// the image files the load step decodes are added to this (assets/).
+std::uint64_t plannedBytes(const Plan& plan);
+
+// The error for a budget passed at `loc`.
+void reportOverBudget(const Plan& plan, SourceLoc loc, std::uint64_t total, Diagnostics& diags);
+
 }  // namespace glimmer

@@ -4,6 +4,7 @@
 // textures it reads. Still no OpenGL: the plan can be built and tested
 // without a context.
 #pragma once
+#include <cstdint>
 #include <map>
 #include <set>
 #include <string>
@@ -135,6 +136,7 @@ struct Plan {
     std::vector<MeshDecl> meshes;
     std::vector<Pass> passes;
     std::map<int, int> finalUnits;  // texture unit -> texture bound there when the script ends
+    std::uint64_t maxMemoryBytes = 0;  // --max-memory: the load step counts image files against it too
 
     bool screenNeeded() const;
 };

@@ -357,6 +357,7 @@ void Builder::finish() {
         }
         if (p->needed) wanted.insert(p->reads.begin(), p->reads.end());
     }
+    plan_.maxMemoryBytes = options_.maxMemoryBytes;
     checkMemoryBudget(plan_, options_.maxMemoryBytes, diags_);
 }
 

@@ -227,5 +227,20 @@ TEST(CliLimits, TargetsPastTheMemoryBudgetAreAnErrorOnTheirLine) {
     EXPECT_NE(r.err.find("need 4099 MiB by this line, more than the memory budget of 1 MiB"), std::string::npos) << r.err;
 }
 
+TEST(CliLimits, ImageFilesCountAgainstTheMemoryBudget) {
+    // grid.bmp decodes to 512 x 512 RGBA8: 1 MiB, which a 1 MiB budget
+    // cannot hold beside a 16 x 16 screen; 2 MiB can.
+    TempDir dir;
+    std::string grid = std::string(GLIMMER_SOURCE_DIR) + "/textures/grid.bmp";
+    auto s = writeFile(dir, "img.glib", "WindowSize 16 16\nTexture2D 5 " + grid + "\nQuadXY 0 1\n");
+    auto r = runGlimmer({"check", s, "--backend", "osmesa", "--max-memory", "1"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(r.err, s + ":2:1: error: textures and render targets need 2 MiB by this line, more than the memory "
+                         "budget of 1 MiB (--max-memory)\n"
+                         "Texture2D 5 " + grid + "\n^\n1 error, 0 warnings\n");
+    r = runGlimmer({"-q", "check", s, "--backend", "osmesa", "--max-memory", "2"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+}
+
 }  // namespace
 }  // namespace glimmer_cli
