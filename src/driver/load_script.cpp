@@ -8,6 +8,7 @@
 
 #include "driver/console.h"
 #include "driver/fold_diagnostics.h"
+#include "lang/comment_notes.h"
 #include "lang/parser.h"
 #include "plan/limits.h"
 #include "util/read_file.h"
@@ -36,6 +37,9 @@ bool loadScript(const std::string& path, const PlanOptions& options, Diagnostics
     out.sources.add(name, text);
     out.script = parseScript(name, text, diags);
     out.plan = buildPlan(out.script, options, diags);
+    for (auto& p : out.plan.programs)  // the script's own words about each pass, for the viewer
+        if (std::string note = commentNoteAbove(text, p.loc.line); !note.empty())
+            p.notes += (p.notes.empty() ? "" : "\n") + note;
     return true;
 }
 

@@ -197,6 +197,7 @@ private:
     };
     std::optional<Immediate> imm_;
     size_t draws_ = 0;
+    std::string pendingNotes_;  // MessageBox texts waiting for the next Program
 };
 
 }  // namespace plan_detail

@@ -50,6 +50,10 @@ struct ProgramDecl {
     std::vector<ShaderStage> stages;
     std::vector<UniformSetting> uniforms;
     bool gstap = false;  // GSTAP was given before this Program
+    // What the script says about this pass, for the viewer: the MessageBox
+    // texts since the previous Program, then the `##` comment block right
+    // above the Program line (added by the driver, which has the text).
+    std::string notes;
 };
 
 struct TextureDecl {

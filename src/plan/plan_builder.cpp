@@ -173,7 +173,9 @@ void Builder::command(const Command& c) {
             else diags_.error(file(), c.loc, "Timer's period must be more than 0 seconds");
         }
         break;
-    case CommandKind::MessageBox: break;  // glman shows the text in a dialog; headless has no one to show it to
+    case CommandKind::MessageBox:  // glman shows the text in a dialog; here it is a note on the next Program
+        if (!c.args.empty()) pendingNotes_ += (pendingNotes_.empty() ? "" : "\n") + c.args[0].text;
+        break;
     case CommandKind::Gstap: gstap_ = true; break;
     case CommandKind::Noise2D:
     case CommandKind::Noise3D: noiseRes(c); break;

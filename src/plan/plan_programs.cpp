@@ -41,6 +41,8 @@ void Builder::program(const Command& c) {
     p.name = c.args[0].text;
     p.loc = c.loc;
     p.gstap = gstap_;
+    p.notes = std::move(pendingNotes_);
+    pendingNotes_.clear();
     for (const auto& [kind, s] : stages_) p.stages.push_back(s);
     if (p.stages.empty())
         diags_.warning(file(), c.loc, fmt::format("Program {} has no shaders; set Vertex and Fragment first", p.name));

@@ -99,6 +99,11 @@ void controls(ViewerState& s) {
         // first Program's group).
         bool sliders = hasSlider(mine);
         if (ImGui::CollapsingHeader(header.c_str(), sliders ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+            if (!decl.notes.empty()) {  // what the script says this pass does (MessageBox, ## comments)
+                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.85f, 1.f, 1.f));
+                ImGui::TextWrapped("%s", decl.notes.c_str());
+                ImGui::PopStyleColor();
+            }
             for (const auto* c : mine) control(s, *c);
             if (sliders && ImGui::Button("Reset")) {
                 for (const auto* c : mine)

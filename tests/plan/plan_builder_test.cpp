@@ -500,5 +500,14 @@ TEST_F(PlanTest, ArityErrors) {
     EXPECT_TRUE(p.plan.meshes.empty());
 }
 
+TEST_F(PlanTest, MessageBoxTextIsANoteOnTheNextProgram) {
+    Planned p = run("Vertex a.vert\nFragment a.frag\nMessageBox Blur: the average of the neighbours\n"
+                    "MessageBox (a cone of weights)\nProgram Blur\nProgram Plain\nQuadXY 0 1\n");
+    EXPECT_EQ(errors(p.diags), V{});
+    ASSERT_EQ(p.plan.programs.size(), 2u);
+    EXPECT_EQ(p.plan.programs[0].notes, "Blur: the average of the neighbours\n(a cone of weights)");
+    EXPECT_EQ(p.plan.programs[1].notes, "");  // each text goes to one Program only
+}
+
 }  // namespace
 }  // namespace glimmer::test
