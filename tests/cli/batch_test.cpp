@@ -18,6 +18,7 @@ namespace fs = std::filesystem;
 using glimmer_cli::countOf;
 using glimmer_cli::runGlimmer;
 using glimmer_cli::TempDir;
+using glimmer_cli::writeRunawayScript;
 
 std::string readAll(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
@@ -42,19 +43,9 @@ TEST(CliBatch, EachScriptIsRenderedOrReportedAndARunawayCostsOnlyItself) {
     TempDir dir;
     std::string good = writeSolid(dir, "good.glib", 0);
     std::ofstream(dir.file("broken.glib")) << "Ortho -1 1 -1\n";
-    // One pass of a few billion sines per pixel: minutes on llvmpipe.
-    std::string body;
-    for (int k = 0; k < 40; ++k) body += "        a = sin(a * 1.0001 + float(i) * 1e-5 + vST.s + " + std::to_string(k) + ".0);\n";
-    std::ofstream(dir.file("st.vert")) << "#version 330 compatibility\nout vec2 vST;\nvoid main() {\n"
-                                          "    vST = gl_MultiTexCoord0.st;\n"
-                                          "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n}\n";
-    std::ofstream(dir.file("slow.frag")) << "#version 330 compatibility\nin vec2 vST;\nvoid main() {\n    float a = 0.;\n"
-                                            "    for (int i = 0; i < 60000; ++i) {\n" << body
-                                         << "    }\n    gl_FragColor = vec4(a, 0., 0., 1.);\n}\n";
-    std::ofstream(dir.file("slow.glib")) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nVertex st.vert\n"
-                                            "Fragment slow.frag\nProgram Slow\nQuadXY 0 1\n";
+    std::string slow = writeRunawayScript(dir);
     std::string other = writeSolid(dir, "other.glib", 1);
-    auto r = runGlimmer({"batch", good, dir.file("broken.glib"), dir.file("slow.glib"), other, "-o", dir.file("out"),
+    auto r = runGlimmer({"batch", good, dir.file("broken.glib"), slow, other, "-o", dir.file("out"),
                          "--report", dir.file("r.jsonl"), "--size", "64x64", "--backend", "osmesa", "--timeout", "2",
                          "--jobs", "2"}, 60);
     EXPECT_FALSE(r.timedOut);

@@ -118,4 +118,25 @@ std::string cliData(const std::string& name) {
     return (fs::path(GLIMMER_TEST_DATA).lexically_relative(GLIMMER_SOURCE_DIR) / "cli" / name).string();
 }
 
+std::string writeRunawayScript(const TempDir& dir) {
+    std::ofstream(dir.file("st.vert")) << "#version 330 compatibility\nout vec2 vST;\nvoid main() {\n"
+                                          "    vST = gl_MultiTexCoord0.st;\n"
+                                          "    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;\n}\n";
+    std::ofstream(dir.file("quick.frag")) << "#version 330 compatibility\nin vec2 vST;\n"
+                                             "void main() { gl_FragColor = vec4(vST, 0., 1.); }\n";
+    std::string body;
+    for (int k = 0; k < 40; ++k)
+        body += "        a = sin(a * 1.0001 + float(i) * 1e-5 + vST.s + " + std::to_string(k) + ".0);\n";
+    std::ofstream(dir.file("slow.frag")) << "#version 330 compatibility\nuniform sampler2D Quick;\nin vec2 vST;\n"
+                                            "void main() {\n    float a = texture(Quick, vST).r;\n"
+                                            "    for (int i = 0; i < 60000; ++i) {\n" << body
+                                         << "    }\n    gl_FragColor = vec4(a, 0., 0., 1.);\n}\n";
+    std::ofstream(dir.file("slow.glib")) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nTexture2D 6 64 64\n"
+                                            "Vertex st.vert\nRenderToTexture 6\nFragment quick.frag\nProgram Quick\n"
+                                            "QuadXY 0 1\nRenderToTexture\nFragment slow.frag\nProgram Slow Quick 6\n"
+                                            "QuadXY 0 1\n";
+    return dir.file("slow.glib");
+}
+
+
 }  // namespace glimmer_cli

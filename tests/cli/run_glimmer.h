@@ -45,4 +45,11 @@ int countOf(const std::string& haystack, const std::string& needle);
 // Test data scripts, relative to the repository root: "tests/data/cli/NAME".
 std::string cliData(const std::string& name);
 
+// slow.glib in `dir` (with st.vert, quick.frag, slow.frag): forty sines an
+// iteration, 60000 iterations (llvmpipe caps a loop at 65535), for every
+// pixel: minutes on llvmpipe, and no compiler can fold it away (each sine
+// feeds the next). The runaway pass is the second, the screen pass at line 9
+// (RenderToTexture); the first, into unit 6, is quick. For --timeout tests.
+std::string writeRunawayScript(const TempDir& dir);
+
 }  // namespace glimmer_cli
