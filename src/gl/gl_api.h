@@ -38,7 +38,7 @@ namespace glimmer {
     X(GenFramebuffers) X(DeleteFramebuffers) X(BindFramebuffer) X(FramebufferTexture2D)                 \
     X(CheckFramebufferStatus) X(GenRenderbuffers) X(DeleteRenderbuffers) X(BindRenderbuffer)            \
     X(RenderbufferStorage) X(FramebufferRenderbuffer) X(DrawBuffers) X(DrawBuffer) X(ReadBuffer)        \
-    X(BlitFramebuffer) X(GenVertexArrays) X(BindVertexArray) X(DeleteVertexArrays)                      \
+    X(BlitFramebuffer) X(Scissor) X(GenVertexArrays) X(BindVertexArray) X(DeleteVertexArrays)                      \
     X(GenQueries) X(DeleteQueries) X(BeginQuery) X(EndQuery) X(GetQueryObjectui64v) X(PatchParameteri)
 
 struct GlApi {

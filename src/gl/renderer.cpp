@@ -127,18 +127,57 @@ unsigned Renderer::attachDepth(int width, int height) {
     return rb;
 }
 
+Renderer::Target* Renderer::passTarget(const Pass& pass) const {
+    for (auto& t : targets_)
+        if (t->textures == pass.targets) return t.get();
+    return screen_.get();
+}
+
+void Renderer::drawPass(const Pass& pass, Target* target, const UniformValues& values, double time) {
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, target->fbo);
+    std::vector<GLenum> buffers;
+    for (size_t k = 0; k < std::max<size_t>(1, pass.targets.size()); ++k) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + k));
+    gl_->DrawBuffers(GLsizei(buffers.size()), buffers.data());
+    gl_->Viewport(0, 0, target->width, target->height);
+    if (pass.needsDepth && target->depth) {
+        gl_->Enable(GL_DEPTH_TEST);
+        gl_->DepthFunc(GL_LESS);
+        // Depth from an earlier frame would hide this one's drawing.
+        gl_->Clear(GL_DEPTH_BUFFER_BIT);
+    } else {
+        gl_->Disable(GL_DEPTH_TEST);
+    }
+    for (const auto& s : pass.steps) {
+        if (s.kind == Step::Kind::Clear) {
+            gl_->ClearColor(s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a);
+            gl_->Clear(GL_COLOR_BUFFER_BIT | (target->depth ? GL_DEPTH_BUFFER_BIT : 0));
+        } else {
+            drawStep(s.draw, values, time, pass.targets);
+        }
+    }
+}
+
+void Renderer::finishPass(const Pass& pass) {
+    // A target with a mip chain gets its levels remade from what the
+    // pass drew, so textureLod and minification read this frame.
+    for (int t : pass.targets) {
+        if (!textures_[size_t(t)].mips) continue;
+        gl_->BindTexture(GL_TEXTURE_2D, textures_[size_t(t)].id);
+        gl_->GenerateMipmap(GL_TEXTURE_2D);
+        gl_->BindTexture(GL_TEXTURE_2D, 0);
+    }
+}
+
 void Renderer::render(const UniformValues& values, double time, std::vector<PassTiming>* timings,
                       const std::vector<bool>* only) {
     if (!plan_ || !screen_) return;
     using Clock = std::chrono::steady_clock;
     std::vector<std::pair<int, unsigned>> pendingQueries;
+    gl_->Disable(GL_SCISSOR_TEST);  // a front end's UI may have left it on
     for (size_t pi = 0; pi < plan_->passes.size(); ++pi) {
         const Pass& pass = plan_->passes[pi];
         if (!pass.needed || (only && (pi >= only->size() || !(*only)[pi]))) continue;
         if (passListener_) passListener_(int(pi));
-        Target* target = screen_.get();
-        for (auto& t : targets_)
-            if (t->textures == pass.targets) target = t.get();
         // On a GPU each pass is timed by the GPU itself (GL_TIME_ELAPSED),
         // with no stall between passes; on a CPU renderer such queries mean
         // nothing, so the pass is fenced with glFinish and a wall clock.
@@ -150,36 +189,8 @@ void Renderer::render(const UniformValues& values, double time, std::vector<Pass
             gl_->GenQueries(1, &query);
             gl_->BeginQuery(GL_TIME_ELAPSED, query);
         }
-
-        gl_->BindFramebuffer(GL_FRAMEBUFFER, target->fbo);
-        std::vector<GLenum> buffers;
-        for (size_t k = 0; k < std::max<size_t>(1, pass.targets.size()); ++k) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + k));
-        gl_->DrawBuffers(GLsizei(buffers.size()), buffers.data());
-        gl_->Viewport(0, 0, target->width, target->height);
-        if (pass.needsDepth && target->depth) {
-            gl_->Enable(GL_DEPTH_TEST);
-            gl_->DepthFunc(GL_LESS);
-            // Depth from an earlier frame would hide this one's drawing.
-            gl_->Clear(GL_DEPTH_BUFFER_BIT);
-        } else {
-            gl_->Disable(GL_DEPTH_TEST);
-        }
-        for (const auto& s : pass.steps) {
-            if (s.kind == Step::Kind::Clear) {
-                gl_->ClearColor(s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a);
-                gl_->Clear(GL_COLOR_BUFFER_BIT | (target->depth ? GL_DEPTH_BUFFER_BIT : 0));
-            } else {
-                drawStep(s.draw, values, time, pass.targets);
-            }
-        }
-        // A target with a mip chain gets its levels remade from what the
-        // pass drew, so textureLod and minification read this frame.
-        for (int t : pass.targets) {
-            if (!textures_[size_t(t)].mips) continue;
-            gl_->BindTexture(GL_TEXTURE_2D, textures_[size_t(t)].id);
-            gl_->GenerateMipmap(GL_TEXTURE_2D);
-            gl_->BindTexture(GL_TEXTURE_2D, 0);
-        }
+        drawPass(pass, passTarget(pass), values, time);
+        finishPass(pass);
         if (passListener_) gl_->Finish();  // the pass is done before the next is announced
         if (gpuTimed) {
             gl_->EndQuery(GL_TIME_ELAPSED);

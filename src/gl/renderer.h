@@ -25,6 +25,27 @@ struct PassTiming {
                         // clock around it with glFinish on each side
 };
 
+// A frame drawn a band of rows at a time, for a front end that must keep
+// answering while a heavy pass draws (the viewer: a 23x23 superblur takes
+// 0.6 s on llvmpipe). Each band is the pass's own draws under a scissor; a
+// fragment's inputs do not depend on the scissor, so the finished frame
+// holds exactly the pixels render() gives. Made by Renderer::startFrame,
+// advanced by Renderer::renderSlice; drop it to abandon the frame.
+struct SlicedFrame {
+    explicit SlicedFrame(const UniformValues& v) : values(v) {}
+    std::vector<bool> only;  // passes to draw (as render()'s `only`)
+    UniformValues values;    // a copy: sliders may move while the frame draws
+    double time = 0;
+    std::size_t pass = 0;    // the pass being drawn
+    int row = 0;             // the next band's first row in that pass (GL rows, from the bottom)
+    double passMs = 0;       // time spent on that pass so far
+    std::vector<PassTiming> timings;  // each finished pass, the sum of its bands
+    bool done = false;
+    // The passes still to draw, the one under way included: a newer frame
+    // that replaces this one must draw them too.
+    std::vector<bool> unfinished() const;
+};
+
 class Renderer {
 public:
     // Loads the GL table through `getProc`; null and `error` when the driver
@@ -53,6 +74,15 @@ public:
     // With `timings`, each pass is timed.
     void render(const UniformValues& values, double time, std::vector<PassTiming>* timings = nullptr,
                 const std::vector<bool>* only = nullptr);
+
+    // A frame of the passes in `only` (see render()), to draw with renderSlice.
+    SlicedFrame startFrame(const UniformValues& values, double time, std::vector<bool> only) const;
+    // Draws bands of `frame` for about `budgetMs` of wall clock (at least one
+    // band), each as tall as this pass's measured cost per row allows; true
+    // when the frame is finished. A budget of infinity draws it all.
+    bool renderSlice(SlicedFrame& frame, double budgetMs);
+    // How much of the frame is drawn, 0 to 1, weighted by each pass's measured cost.
+    double progress(const SlicedFrame& frame) const;
 
     // Called with each pass's index as it starts; while one is set, each
     // pass is finished before the next starts, so the listener knows which
@@ -122,6 +152,13 @@ private:
     void makeScreen(const Plan& plan, Diagnostics& diags);
     // A depth renderbuffer of this size, attached to the bound framebuffer.
     unsigned attachDepth(int width, int height);
+    // The pass's framebuffer (the screen's when it writes no texture).
+    Target* passTarget(const Pass& pass) const;
+    // Binds the target and draws the pass's steps into it (under the scissor
+    // when one is on); then, once the whole pass is drawn, finishPass remakes
+    // the mip chains of the textures it wrote.
+    void drawPass(const Pass& pass, Target* target, const UniformValues& values, double time);
+    void finishPass(const Pass& pass);
     void drawStep(const Draw& d, const UniformValues& values, double time, const std::vector<int>& targets);
     // Why this mesh cannot be drawn with this program (a patch mesh without
     // tessellation shaders, a primitive the geometry shader does not take);
@@ -148,6 +185,7 @@ private:
     std::unique_ptr<Target> screen_;
     glm::mat4 scene_{1.f};
     std::function<void(int)> passListener_;
+    std::vector<double> msPerRow_;  // per pass: the wall clock a row of it took in its last band (0: not yet)
     mutable int gpuTimers_ = -1;  // -1: not asked yet
     unsigned screenTexture_ = 0;
     // Noise2 (unit 2) and Noise3 (unit 3), per resolution; they outlive

@@ -294,9 +294,13 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
         ImGui::Checkbox("Probe (hover the picture)", &s.probe);
         if (!s.probeText.empty()) ImGui::TextUnformatted(s.probeText.c_str());
 
-        // Timings fold away, so the sliders stay near the top.
-        std::string timings = fmt::format("frame {:.1f} ms, {} pass{}###timings", s.lastFrameMs, s.lastTimings.size(),
-                                          s.lastTimings.size() == 1 ? "" : "es");
+        // Timings fold away, so the sliders stay near the top. A picture
+        // drawn in slices shows its progress on the same line, so nothing
+        // below moves (a slider being dragged stays under the pointer).
+        std::string timings =
+            s.drawing >= 0 ? fmt::format("drawing... {:.0f}% (last frame {:.1f} ms)###timings", 100.0 * s.drawing, s.lastFrameMs)
+                           : fmt::format("frame {:.1f} ms, {} pass{}###timings", s.lastFrameMs, s.lastTimings.size(),
+                                         s.lastTimings.size() == 1 ? "" : "es");
         if (ImGui::TreeNode(timings.c_str())) {
             for (const auto& t : s.lastTimings) ImGui::Text("%s: %.2f ms", passName(plan, t.pass).c_str(), t.ms);
             ImGui::TreePop();

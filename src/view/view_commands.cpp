@@ -72,11 +72,14 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
     } else if (word == "help") {
         if (!want(0, "help")) return std::nullopt;
         c.kind = ViewCommand::Kind::Help;
+    } else if (word == "frames") {
+        if (!want(0, "frames")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Frames;
     } else if (word == "quit") {
         if (!want(0, "quit")) return std::nullopt;
         c.kind = ViewCommand::Kind::Quit;
     } else {
-        error = "unknown command '" + word + "' (set, reload, save, show, help, quit)";
+        error = "unknown command '" + word + "' (set, reload, save, show, help, frames, quit)";
         return std::nullopt;
     }
     return c;

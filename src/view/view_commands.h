@@ -8,7 +8,7 @@
 namespace glimmer {
 
 struct ViewCommand {
-    enum class Kind { Set, Reload, Save, Show, Help, Quit };
+    enum class Kind { Set, Reload, Save, Show, Help, Frames, Quit };
     Kind kind = Kind::Quit;
     std::string name;   // Set: the uniform; Save: the file
     double value = 0;   // Set: the first number

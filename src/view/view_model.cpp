@@ -107,6 +107,7 @@ std::string helpText() {
            "  save FILE.png      save what is shown (the picture, or the inspected target)\n"
            "  show UNIT|screen   inspect the render target on a texture unit, or the picture\n"
            "  help               print this list\n"
+           "  frames             print frame times since the last 'frames' and the last picture's time\n"
            "  quit               close the window\n"
            "keys (over the window):\n"
            "  space  pause / play Timer        H  hide / show the panel\n"

@@ -8,7 +8,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <iostream>
+#include <limits>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <thread>
@@ -28,6 +31,27 @@ namespace glimmer {
 namespace {
 
 using Clock = std::chrono::steady_clock;
+
+// A slice of a heavy frame draws for about this long between two window
+// frames: with the window's own ~10 ms on llvmpipe a frame stays near 35 ms
+// while a slider is dragged (the goal is a p95 under 50 ms), and the bands
+// stay tall enough that their set-up costs little (docs/PERFORMANCE.md).
+constexpr double kSliceMs = 25;
+// While a frame draws and nothing asks for the window, slices follow each
+// other without a window frame in between, except to show progress this often.
+constexpr auto kProgressEvery = std::chrono::milliseconds(100);
+constexpr double kIdleSliceFactor = 2.5;
+
+// The slice budget: kSliceMs, or $GLIMMER_SLICE_MS for benchmarks
+// (tools/bench-viewer.sh), where 0 draws every frame whole, as before slices.
+double sliceBudgetMs() {
+    const char* e = std::getenv("GLIMMER_SLICE_MS");
+    if (!e || !*e) return kSliceMs;
+    char* end = nullptr;
+    double v = std::strtod(e, &end);
+    if (end == e || *end || !(v >= 0) || v > 1e6) return kSliceMs;
+    return v == 0 ? std::numeric_limits<double>::infinity() : v;
+}
 
 class Viewer {
 public:
@@ -100,6 +124,8 @@ public:
             for (const auto& a : options_.sets) values.applySet(next.plan, a, diags);
         bool first = !s_.good;
         s_.good = std::move(next);
+        drawing_.reset();  // its passes belong to the old plan
+        s_.drawing = -1;
         s_.renderer = std::move(renderer);
         s_.values = values;
         s_.drawnWith.reset();
@@ -148,18 +174,20 @@ public:
             // kernel reports, a resize to settle; a running Timer draws at 50 Hz.
             ImGuiIO& io = ImGui::GetIO();
             bool animating = s_.playing && timerUsed();
-            if (framesLeft > 0) glfwPollEvents();
+            const bool busy = drawing_.has_value();
+            if (framesLeft > 0 || busy) glfwPollEvents();
             else if (animating) glfwWaitEventsTimeout(0.02);
             else if (watch_.busy() || resizeAt_ != Clock::time_point::max()) glfwWaitEventsTimeout(0.025);
             else if (io.WantTextInput) glfwWaitEventsTimeout(0.5);  // the text cursor blinks
             else glfwWaitEvents();
             bool draw = framesLeft > 0 || animating;
             if (framesLeft > 0) --framesLeft;
+            auto now = Clock::now();
             if (gInput.exchange(false)) {
                 framesLeft = 3;
                 draw = true;
+                lastInput_ = now;
             }
-            auto now = Clock::now();
             if (s_.playing) s_.time += std::chrono::duration<double>(now - lastTick).count();
             lastTick = now;
 
@@ -172,8 +200,19 @@ public:
             for (const auto& line : queue.take()) {
                 quit |= execute(line);
                 draw = true;
+                lastInput_ = now;
             }
             if (quit) break;
+            if (!draw && busy) {
+                // Nothing asked for the window: draw more of the frame, and
+                // show how far it got now and then.
+                if (Clock::now() - lastUiFrame_ < kProgressEvery) {
+                    renderScene();
+                    if (drawing_) continue;
+                }
+                draw = true;  // progress to show, or the finished picture
+
+            }
             if (!draw) continue;
 
             int fbw = 0, fbh = 0;
@@ -192,6 +231,7 @@ public:
             presentPicture(fbw, fbh);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(w);
+            noteFrame();
             for (const auto& c : asked) quit |= apply(c);
             layout();
         }
@@ -441,10 +481,22 @@ private:
         ImGui::EndTooltip();
     }
 
-    // Runs the passes that changed since the picture was drawn: all after a
-    // load, the ones reading a changed Program's uniforms, the ones reading
-    // Timer while time runs; nothing when nothing changed.
+    // Starts a frame of the passes that changed since the last one started:
+    // all after a load, the ones reading a changed Program's uniforms, the
+    // ones reading Timer while time runs. A change while a frame is under
+    // way replaces it, and the new frame also draws what the old one had not
+    // finished (the stale work is dropped, never half kept). Then draws
+    // about `budgetMs` of the frame in bands (gl/renderer_sliced.cpp), so a
+    // heavy pass never holds the window; the picture counts as drawn once
+    // the frame finishes, bit-identical to one whole render.
+    // Slices of kSliceMs while the user is at it; once input has stopped
+    // for a quarter second, longer ones, so the final picture comes sooner
+    // (fewer bands and window frames between them).
     void renderScene() {
+        bool active = Clock::now() - lastInput_ < std::chrono::milliseconds(250);
+        renderScene(active ? sliceMs_ : sliceMs_ * kIdleSliceFactor);
+    }
+    void renderScene(double budgetMs) {
         if (!s_.renderer || !s_.good) return;
         const Plan& plan = s_.good->plan;
         Change change;
@@ -452,20 +504,39 @@ private:
         change.screen = s_.sceneMoved;
         s_.sceneMoved = false;
         if (s_.drawnWith) change.programs = s_.values->programsDifferingFrom(*s_.drawnWith);
-        if (s_.time != s_.drawnTime)
+        // Time alone never replaces a frame under way: a heavy animated scene
+        // would otherwise restart every window frame and never finish one.
+        if (s_.time != s_.drawnTime && (!drawing_ || !change.programs.empty() || change.screen || change.everything))
             for (size_t p = 0; p < plan.programs.size(); ++p)
                 if (s_.renderer->usesTimer(int(p))) change.programs.insert(int(p));
         std::vector<bool> only = passesToRun(plan, change);
         bool any = false;
         for (bool b : only) any |= b;
-        if (!any) return;
-        auto start = Clock::now();
-        s_.lastTimings.clear();
-        s_.renderer->render(*s_.values, s_.time, &s_.lastTimings, &only);
-        s_.lastFrameMs = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-        s_.drawnWith = s_.values;
-        s_.drawnTime = s_.time;
-        s_.drawAll = false;
+        if (any) {
+            if (drawing_) {
+                std::vector<bool> left = drawing_->unfinished();
+                for (size_t p = 0; p < only.size() && p < left.size(); ++p) only[p] = only[p] || left[p];
+            }
+            drawing_.emplace(s_.renderer->startFrame(*s_.values, s_.time, std::move(only)));
+            drawingSince_ = Clock::now();
+            s_.drawnWith = s_.values;
+            s_.drawnTime = s_.time;
+            s_.drawAll = false;
+        }
+        if (!drawing_) return;
+        ++slices_;
+        if (!s_.renderer->renderSlice(*drawing_, budgetMs)) {
+            s_.drawing = float(s_.renderer->progress(*drawing_));
+            return;
+        }
+        s_.drawing = -1;
+        s_.lastTimings = drawing_->timings;
+        s_.lastFrameMs = 0;
+        for (const auto& t : s_.lastTimings) s_.lastFrameMs += t.ms;
+        lastPictureMs_ = std::chrono::duration<double, std::milli>(Clock::now() - drawingSince_).count();
+        lastPictureSlices_ = slices_;
+        slices_ = 0;
+        drawing_.reset();
         ++pictureVersion_;
         // The numeric health badge reads every target back: at most twice a
         // second, so dragging a slider stays smooth.
@@ -479,6 +550,31 @@ private:
             if (report != lastReport_) std::cerr << report;  // once per change, for scripts watching stderr
             lastReport_ = report;
         }
+    }
+
+    // The time since the last window frame, while the window is busy (a
+    // pause of a second or more is idle time, not a slow frame).
+    void noteFrame() {
+        auto now = Clock::now();
+        double ms = std::chrono::duration<double, std::milli>(now - lastUiFrame_).count();
+        if (ms < 1000 && frameIntervals_.size() < 1000000) frameIntervals_.push_back(ms);
+        lastUiFrame_ = now;
+    }
+
+    // The `frames` command: how long the window took between frames since
+    // the last `frames` (what a drag feels like), and how long the last
+    // picture took to finish after its last change. tools/bench-viewer.sh reads it.
+    void printFrameStats() {
+        std::vector<double> d = frameIntervals_;
+        frameIntervals_.clear();
+        std::sort(d.begin(), d.end());
+        auto at = [&](double q) { return d.empty() ? 0.0 : d[std::min(d.size() - 1, size_t(q * double(d.size())))]; };
+        std::cout << fmt::format("frames: {} drawn, median {:.1f} ms, p95 {:.1f} ms, max {:.1f} ms; "
+                                 "last picture {:.1f} ms after its last change ({:.1f} ms drawing, {} slice{}){}\n",
+                                 d.size(), at(0.5), at(0.95), d.empty() ? 0.0 : d.back(), lastPictureMs_,
+                                 s_.lastFrameMs, lastPictureSlices_, lastPictureSlices_ == 1 ? "" : "s",
+                                 drawing_ ? "; a picture is being drawn" : "");
+        std::cout.flush();
     }
 
     bool execute(const std::string& line) {
@@ -495,6 +591,7 @@ private:
         switch (c.kind) {
         case ViewCommand::Kind::Quit: return true;
         case ViewCommand::Kind::Help: std::cerr << helpText(); break;
+        case ViewCommand::Kind::Frames: printFrameStats(); break;
         case ViewCommand::Kind::Reload: load("reloaded"); break;
         case ViewCommand::Kind::Set: {
             if (!s_.good) break;
@@ -527,7 +624,9 @@ private:
         if (hardcopy) {
             img = renderAtSize(s_.hardcopy[0], s_.hardcopy[1]);
         } else {
-            renderScene();  // a command may have changed values since the last frame
+            // A command may have changed values since the last frame, and a
+            // frame may be under way: what is saved is the finished picture.
+            renderScene(std::numeric_limits<double>::infinity());
             img = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTexture(s_.shownTexture);
         }
         if (img.empty()) return;
@@ -573,6 +672,13 @@ private:
     int probeTexture_ = -2;
     Image probeImage_;
     std::unique_ptr<WindowFrame> frame_;  // clears the window; the viewer itself calls no GL
+    // The frame being drawn a slice at a time (none when the picture is done).
+    std::optional<SlicedFrame> drawing_;
+    const double sliceMs_ = sliceBudgetMs();
+    Clock::time_point drawingSince_{}, lastUiFrame_{}, lastInput_{};
+    int slices_ = 0, lastPictureSlices_ = 0;
+    double lastPictureMs_ = 0;
+    std::vector<double> frameIntervals_;  // ms between window frames while busy, for `frames`
 };
 
 // The window's starting size: --size, else the script's WindowSize, else 600x600.

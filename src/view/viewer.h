@@ -71,7 +71,8 @@ struct ViewerState {
     std::string probeText;  // what the probe read at the pointer, for the panel
     std::vector<PassTiming> lastTimings;
     std::vector<TargetHealth> health;  // measured now and then after drawing (a read-back of every target)
-    double lastFrameMs = 0;
+    double lastFrameMs = 0;  // the last finished picture's drawing time, all its passes
+    float drawing = -1;      // how much of a picture under way is drawn (0 to 1); -1: none
     std::string status;  // a one-line message for the panel (saved ..., reloaded ...)
 
     // glman's mouse: drag to turn the scene, scroll to zoom; kept out of the

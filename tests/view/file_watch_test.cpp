@@ -99,7 +99,7 @@ TEST(ViewCommands, ParsesEveryCommand) {
 TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     std::string err;
     EXPECT_FALSE(parseViewCommand("jump", err));
-    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, help, quit)");
+    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, help, frames, quit)");
     EXPECT_FALSE(parseViewCommand("set uAdd", err));
     EXPECT_EQ(err, "usage: set NAME VALUE");
     EXPECT_FALSE(parseViewCommand("set uAdd lots", err));
