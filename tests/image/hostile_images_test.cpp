@@ -127,6 +127,22 @@ TEST(HostileImages, SixteenBitPnmIsNotDecoded) {
     EXPECT_EQ(loadError(p), p + ": not an image Glimmer reads (BMP, PNG, JPEG, Radiance .hdr or raw .tex)");
 }
 
+// The same bytes handed straight to the PNG/JPEG decoder (as the fuzz
+// target does): it sniffs them itself, so stb's PNM reader is never reached.
+// From the fuzzing campaign: P5, CR as the separator, maxval 5503 (16 bit).
+TEST(HostileImages, PngJpegDecoderRefusesWhatIsNotPngOrJpeg) {
+    for (const std::string& header : {std::string("P5\n2 2\n65535\n"), std::string("P5\r155\r5503\r0525"),
+                                      std::string("GIF89a\x01\x00\x01\x00")}) {
+        Bytes b = text(header);
+        append(b, {0, 0, 0, 0, 0, 0});
+        Image img;
+        std::string error;
+        EXPECT_FALSE(decodePngJpeg(b, img, error)) << header;
+        EXPECT_EQ(error, "not a PNG or JPEG file (by its first bytes)");
+        EXPECT_TRUE(img.empty());
+    }
+}
+
 TEST(HostileImages, HugePngHeaderIsRefusedBeforeDecoding) {
     Dir d;
     Bytes b = text("\x89PNG\r\n\x1a\n");
