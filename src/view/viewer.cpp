@@ -506,12 +506,29 @@ private:
             break;
         }
         case ViewCommand::Kind::Save: save(c.name.empty() ? nextFreeName("glimmer", ".png") : c.name, c.unit == -2); break;
-        case ViewCommand::Kind::Show:
-            if (c.unit < 0) s_.shownTexture = -1;
-            else if (s_.good && s_.good->plan.finalUnits.count(c.unit)) s_.shownTexture = s_.good->plan.finalUnits.at(c.unit);
-            else std::cerr << "glimmer view: show: no texture on unit " << c.unit << "\n";
+        case ViewCommand::Kind::Show: textureOnUnit("show", c.unit, s_.shownTexture); break;
+        case ViewCommand::Kind::Values: s_.showValues = c.on; break;
+        case ViewCommand::Kind::Probe:
+            if (!c.report) s_.probe = c.on;
+            else if (!s_.probe) std::cerr << "glimmer view: probe: off (probe on turns it on)\n";
+            else if (s_.probeText.empty()) std::cerr << "glimmer view: probe: the pointer is not over the picture\n";
+            else std::cerr << "glimmer view: probe " << s_.probeText << "\n";
+            break;
+        case ViewCommand::Kind::Split:
+            if (c.on && textureOnUnit("split", c.unit, s_.compareLeft) && textureOnUnit("split", c.right, s_.compareRight))
+                s_.compare = true;
+            else if (!c.on) s_.compare = false;
             break;
         }
+        return false;
+    }
+
+    // The texture on a texture unit (the screen for -1) into `texture`;
+    // false, with a message, when no target is on that unit.
+    bool textureOnUnit(const char* command, int unit, int& texture) {
+        if (unit < 0) return texture = -1, true;
+        if (s_.good && s_.good->plan.finalUnits.count(unit)) return texture = s_.good->plan.finalUnits.at(unit), true;
+        std::cerr << "glimmer view: " << command << ": no texture on unit " << unit << "\n";
         return false;
     }
 

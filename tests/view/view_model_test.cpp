@@ -115,7 +115,7 @@ TEST(WindowLayout, PanelBesideThePictureAndHidden) {
 TEST(Help, ListsEveryCommandOnALineOfItsOwn) {
     std::string help = helpText();
     std::string err;
-    for (const char* word : {"set", "reload", "save", "show", "help", "quit"}) {
+    for (const char* word : {"set", "reload", "save", "show", "values", "probe", "split", "help", "quit"}) {
         EXPECT_NE(help.find(std::string("\n  ") + word + " "), std::string::npos) << word;
     }
     for (const char* key : {"space", "H ", "F ", "R ", "0 ", "S ", "Q, Esc"}) EXPECT_NE(help.find(key), std::string::npos) << key;

@@ -197,7 +197,7 @@ TEST(ViewerLesson, HelpListsEveryCommand) {
     EXPECT_EQ(v.quit(), 0) << v.log();
     std::string log = v.log();
     for (const char* line : {"\n  set NAME VALUE ", "\n  reload ", "\n  save FILE.png ", "\n  show UNIT|screen ",
-                             "\n  help ", "\n  quit "})
+                             "\n  values on|off ", "\n  probe on|off ", "\n  split L R ", "\n  help ", "\n  quit "})
         EXPECT_NE(log.find(line), std::string::npos) << line << "\n" << log;
 }
 
