@@ -308,16 +308,18 @@ private:
     }
 
     // "Show values": one line per control, over a dark box, at the
-    // picture's top left: where the saved PNG has it.
+    // picture's top left: the same box and glyphs (stb_easy_font, drawText's
+    // layout) as the saved PNG has, pixel for pixel.
     void overlay() {
         if (!s_.showValues) return;
         std::string text = overlayText(s_);
         if (text.empty()) return;
         ImDrawList* dl = ImGui::GetForegroundDrawList();
-        ImVec2 size = ImGui::CalcTextSize(text.c_str());
-        float pad = 4.f * ImGui::GetStyle().ItemSpacing.y / 4.f;
-        dl->AddRectFilled(ImVec2(8.f, 8.f), ImVec2(8.f + size.x + 2 * pad, 8.f + size.y + 2 * pad), IM_COL32(0, 0, 0, 190));
-        dl->AddText(ImVec2(8.f + pad, 8.f + pad), IM_COL32(255, 255, 255, 255), text.c_str());
+        TextLayout l = layoutText(8, 8, text);
+        auto v = [](int x, int y) { return ImVec2(float(x), float(y)); };
+        // drawText darkens the box to a third of the picture: black at 2/3 alpha.
+        dl->AddRectFilled(v(l.box[0], l.box[1]), v(l.box[2], l.box[3]), IM_COL32(0, 0, 0, 170));
+        for (const auto& q : l.quads) dl->AddRectFilled(v(q[0], q[1]), v(q[2], q[3]), IM_COL32(255, 255, 255, 255));
     }
 
     void watchFilesOf(const Plan& plan) {
