@@ -100,6 +100,12 @@ WindowLayout layoutWindow(int pictureW, int pictureH, bool panelShown, int panel
     return l;
 }
 
+float chooseUiScale(double option, float monitorScaleX, float monitorScaleY) {
+    if (option > 0) return float(option);
+    float monitor = std::max(monitorScaleX, monitorScaleY);
+    return std::isfinite(monitor) ? std::max(1.f, monitor) : 1.f;
+}
+
 std::string helpText() {
     return "commands (one a line on standard input, or ';'-separated in --exec):\n"
            "  set NAME VALUE     set a uniform (every Program that has it)\n"

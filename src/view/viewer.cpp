@@ -129,12 +129,9 @@ public:
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
         ImGui_ImplGlfw_InitForOpenGL(w, true);
         ImGui_ImplOpenGL3_Init("#version 130");
-        float scale = float(options_.uiScale);
-        if (scale <= 0) {
-            float sx = 1, sy = 1;
-            glfwGetWindowContentScale(w, &sx, &sy);
-            scale = std::max(1.f, std::max(sx, sy));
-        }
+        float sx = 1, sy = 1;
+        if (options_.uiScale <= 0) glfwGetWindowContentScale(w, &sx, &sy);
+        float scale = chooseUiScale(options_.uiScale, sx, sy);
         setUpFonts(scale);
         std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
         gWindowAlive = true;

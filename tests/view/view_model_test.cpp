@@ -126,4 +126,16 @@ TEST(Help, ListsEveryCommandOnALineOfItsOwn) {
     EXPECT_EQ(err, "usage: help");
 }
 
+// The panel follows the monitor's content scale (GLFW's; Xvfb always says
+// 1) unless --ui-scale is given; a scale below 1 is never used.
+TEST(UiScale, OptionElseTheMonitorsContentScale) {
+    EXPECT_EQ(chooseUiScale(0, 1.f, 1.f), 1.f);      // Xvfb, a plain monitor
+    EXPECT_EQ(chooseUiScale(0, 2.f, 2.f), 2.f);      // a HiDPI monitor
+    EXPECT_EQ(chooseUiScale(0, 1.25f, 1.5f), 1.5f);  // the larger of the two
+    EXPECT_EQ(chooseUiScale(0, 0.75f, 0.75f), 1.f);  // never smaller than 1
+    EXPECT_EQ(chooseUiScale(0, 0.f, 0.f), 1.f);      // a monitor that reports nothing
+    EXPECT_EQ(chooseUiScale(1.5, 2.f, 2.f), 1.5f);   // --ui-scale wins
+    EXPECT_EQ(chooseUiScale(2, 1.f, 1.f), 2.f);
+}
+
 }  // namespace
