@@ -427,7 +427,7 @@ TEST(ViewerControls, ClickingAThumbnailInspectsThatTarget) {
     click(hot.front());
     EXPECT_TRUE(eventually([&] { return allAre(captureWindow(*x, p.dir), 0, 0, kPicture, kPicture, kHot); })) << v.log();
     // What is saved is the inspected target: unit 3's float values, clamped to 8 bits.
-    auto png = saved(v, p.dir, "inspected.png");
+    ASSERT_FALSE(saved(v, p.dir, "inspected.png").empty()) << v.log();
     glimmer::Image img = load(p.dir / "inspected.png");
     ASSERT_FALSE(img.empty());
     EXPECT_TRUE(allAre(img, 0, 0, img.width, img.height, kHot));
