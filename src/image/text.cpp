@@ -41,11 +41,12 @@ void measureText(const std::string& text, int scale, int& width, int& height) {
     height = (stb_easy_font_height(copy.data()) + 2 * kPad) * scale;
 }
 
-void drawText(Image& img, int x, int y, const std::string& text, int scale) {
-    if (img.type != Image::Type::U8 || text.empty()) return;
+TextLayout layoutText(int x, int y, const std::string& text, int scale) {
+    TextLayout out;
+    if (text.empty()) return out;
     int w = 0, h = 0;
     measureText(text, scale, w, h);
-    fillRect(img, x, y, x + w, y + h, 0, 0, 0, true);
+    out.box = {x, y, x + w, y + h};
     // Each character is a set of axis-aligned quads, 4 vertices of 16 bytes.
     std::vector<char> buffer(text.size() * 270 + 1024);
     std::string copy = text;
@@ -54,10 +55,17 @@ void drawText(Image& img, int x, int y, const std::string& text, int scale) {
     for (int q = 0; q < quads; ++q) {
         const float* quad = v + q * 16;  // x, y, z, colour as 4 floats a vertex
         float qx0 = quad[0], qy0 = quad[1], qx1 = quad[8], qy1 = quad[9];
-        int px0 = x + int(std::lround((qx0 + kPad) * scale)), py0 = y + int(std::lround((qy0 + kPad) * scale));
-        int px1 = x + int(std::lround((qx1 + kPad) * scale)), py1 = y + int(std::lround((qy1 + kPad) * scale));
-        fillRect(img, px0, py0, px1, py1, 255, 255, 255, false);
+        out.quads.push_back({x + int(std::lround((qx0 + kPad) * scale)), y + int(std::lround((qy0 + kPad) * scale)),
+                             x + int(std::lround((qx1 + kPad) * scale)), y + int(std::lround((qy1 + kPad) * scale))});
     }
+    return out;
+}
+
+void drawText(Image& img, int x, int y, const std::string& text, int scale) {
+    if (img.type != Image::Type::U8 || text.empty()) return;
+    TextLayout l = layoutText(x, y, text, scale);
+    fillRect(img, l.box[0], l.box[1], l.box[2], l.box[3], 0, 0, 0, true);
+    for (const auto& q : l.quads) fillRect(img, q[0], q[1], q[2], q[3], 255, 255, 255, false);
 }
 
 }  // namespace glimmer

@@ -1,7 +1,9 @@
 // Text drawn into pixels, with stb_easy_font: the overlay of uniform values
 // that a saved handout keeps, and the labels of contact sheets.
 #pragma once
+#include <array>
 #include <string>
+#include <vector>
 
 #include "image/image.h"
 
@@ -11,6 +13,15 @@ namespace glimmer {
 // (x, y), row 0 at the top, each font pixel `scale` image pixels, over a
 // dark box so it stays readable on any picture. RGBA8 images only.
 void drawText(Image& img, int x, int y, const std::string& text, int scale = 2);
+
+// Where drawText puts the dark box and the white quads of the glyphs, in
+// image pixels (x0, y0, x1, y1; x1 and y1 excluded), so a window can draw
+// the very same overlay as a saved picture (the viewer's "Show values").
+struct TextLayout {
+    std::array<int, 4> box{};
+    std::vector<std::array<int, 4>> quads;
+};
+TextLayout layoutText(int x, int y, const std::string& text, int scale = 2);
 
 // The size drawText would cover, box included.
 void measureText(const std::string& text, int scale, int& width, int& height);

@@ -132,6 +132,7 @@ void messages(ViewerState& s) {
             if (ImGui::Selectable(s.errors[i].text.c_str())) {
                 ImGui::SetClipboardText(s.errors[i].where.c_str());
                 s.status = "copied " + s.errors[i].where;
+                std::cerr << "glimmer view: " << s.status << "\n";
             }
             ImGui::PopStyleColor();
             if (gMono) ImGui::PopFont();

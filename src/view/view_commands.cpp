@@ -14,6 +14,21 @@ bool toNumber(const std::string& s, double& v) {
     return ec == std::errc() && end == s.data() + s.size();
 }
 
+// A texture unit (0 to 31) or "screen" (-1).
+bool toUnit(const std::string& s, int& unit) {
+    if (s == "screen") return unit = -1, true;
+    double u = -1;
+    if (!toNumber(s, u) || u < 0 || u > 31 || u != int(u)) return false;
+    unit = int(u);
+    return true;
+}
+
+bool toOnOff(const std::string& s, bool& on) {
+    if (s != "on" && s != "off") return false;
+    on = s == "on";
+    return true;
+}
+
 }  // namespace
 
 std::vector<std::string> splitCommands(const std::string& text) {
@@ -63,12 +78,35 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
     } else if (word == "show") {
         if (!want(1, "show TARGET_UNIT|screen")) return std::nullopt;
         c.kind = ViewCommand::Kind::Show;
-        double u = -1;
-        if (args[0] != "screen" && (!toNumber(args[0], u) || u < 0 || u > 31 || u != int(u))) {
+        if (!toUnit(args[0], c.unit)) {
             error = "show: '" + args[0] + "' is not a texture unit (0 to 31) or 'screen'";
             return std::nullopt;
         }
-        c.unit = int(u);
+    } else if (word == "values") {
+        if (!want(1, "values on|off") || !toOnOff(args[0], c.on)) {
+            error = "usage: values on|off";
+            return std::nullopt;
+        }
+        c.kind = ViewCommand::Kind::Values;
+    } else if (word == "probe") {
+        c.kind = ViewCommand::Kind::Probe;
+        c.report = args.empty();
+        if (!c.report && (args.size() != 1 || !toOnOff(args[0], c.on))) {
+            error = "usage: probe [on|off]";
+            return std::nullopt;
+        }
+    } else if (word == "split") {
+        c.kind = ViewCommand::Kind::Split;
+        if (args.size() == 1 && toOnOff(args[0], c.on) && !c.on) return c;
+        if (args.size() != 2) {
+            error = "usage: split LEFT_UNIT|screen RIGHT_UNIT|screen, or split off";
+            return std::nullopt;
+        }
+        for (int i = 0; i < 2; ++i)
+            if (!toUnit(args[size_t(i)], i == 0 ? c.unit : c.right)) {
+                error = "split: '" + args[size_t(i)] + "' is not a texture unit (0 to 31) or 'screen'";
+                return std::nullopt;
+            }
     } else if (word == "help") {
         if (!want(0, "help")) return std::nullopt;
         c.kind = ViewCommand::Kind::Help;
@@ -79,7 +117,7 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         if (!want(0, "quit")) return std::nullopt;
         c.kind = ViewCommand::Kind::Quit;
     } else {
-        error = "unknown command '" + word + "' (set, reload, save, show, help, frames, quit)";
+        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, help, frames, quit)";
         return std::nullopt;
     }
     return c;

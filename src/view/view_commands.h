@@ -8,12 +8,15 @@
 namespace glimmer {
 
 struct ViewCommand {
-    enum class Kind { Set, Reload, Save, Show, Help, Frames, Quit };
+    enum class Kind { Set, Reload, Save, Show, Values, Probe, Split, Help, Frames, Quit };
     Kind kind = Kind::Quit;
     std::string name;   // Set: the uniform; Save: the file
     double value = 0;   // Set: the first number
     std::string text;   // Set: the value as written: a number, true/false, or "r,g,b[,a]" / a vector
-    int unit = -1;      // Show: texture unit, -1 for the screen
+    int unit = -1;      // Show, Split's left side: texture unit, -1 for the screen
+    int right = -1;     // Split's right side: texture unit, -1 for the screen
+    bool on = true;     // Values, Probe, Split: on or off
+    bool report = false;  // Probe with no argument: print what the probe reads now
 };
 
 // Parses one command; nullopt and `error` for anything else. Blank lines

@@ -100,12 +100,21 @@ WindowLayout layoutWindow(int pictureW, int pictureH, bool panelShown, int panel
     return l;
 }
 
+float chooseUiScale(double option, float monitorScaleX, float monitorScaleY) {
+    if (option > 0) return float(option);
+    float monitor = std::max(monitorScaleX, monitorScaleY);
+    return std::isfinite(monitor) ? std::max(1.f, monitor) : 1.f;
+}
+
 std::string helpText() {
     return "commands (one a line on standard input, or ';'-separated in --exec):\n"
            "  set NAME VALUE     set a uniform (every Program that has it)\n"
            "  reload             load the script again\n"
            "  save FILE.png      save what is shown (the picture, or the inspected target)\n"
            "  show UNIT|screen   inspect the render target on a texture unit, or the picture\n"
+           "  values on|off      the \"Show values\" overlay (also burned into saves)\n"
+           "  probe on|off       the pixel probe; \"probe\" alone prints what it reads under the pointer\n"
+           "  split L R | off    before/after split: unit L (or screen) left, R right of the divider\n"
            "  help               print this list\n"
            "  frames             print frame times since the last 'frames' and the last picture's time\n"
            "  quit               close the window\n"

@@ -48,6 +48,11 @@ struct WindowLayout {
 };
 WindowLayout layoutWindow(int pictureW, int pictureH, bool panelShown, int panelW, int panelH, int maxHeight);
 
+// The panel's scale: --ui-scale when given (non-zero), else the monitor's
+// content scale as GLFW reports it (the larger of x and y; a HiDPI screen
+// says 2), never below 1.
+float chooseUiScale(double option, float monitorScaleX, float monitorScaleY);
+
 // Every command and key, a line each (the `help` command prints it).
 std::string helpText();
 

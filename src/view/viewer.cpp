@@ -155,12 +155,9 @@ public:
         ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini beside the user's files
         ImGui_ImplGlfw_InitForOpenGL(w, true);
         ImGui_ImplOpenGL3_Init("#version 130");
-        float scale = float(options_.uiScale);
-        if (scale <= 0) {
-            float sx = 1, sy = 1;
-            glfwGetWindowContentScale(w, &sx, &sy);
-            scale = std::max(1.f, std::max(sx, sy));
-        }
+        float sx = 1, sy = 1;
+        if (options_.uiScale <= 0) glfwGetWindowContentScale(w, &sx, &sy);
+        float scale = chooseUiScale(options_.uiScale, sx, sy);
         setUpFonts(scale);
         std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
         gWindowAlive = true;
@@ -348,16 +345,18 @@ private:
     }
 
     // "Show values": one line per control, over a dark box, at the
-    // picture's top left: where the saved PNG has it.
+    // picture's top left: the same box and glyphs (stb_easy_font, drawText's
+    // layout) as the saved PNG has, pixel for pixel.
     void overlay() {
         if (!s_.showValues) return;
         std::string text = overlayText(s_);
         if (text.empty()) return;
         ImDrawList* dl = ImGui::GetForegroundDrawList();
-        ImVec2 size = ImGui::CalcTextSize(text.c_str());
-        float pad = 4.f * ImGui::GetStyle().ItemSpacing.y / 4.f;
-        dl->AddRectFilled(ImVec2(8.f, 8.f), ImVec2(8.f + size.x + 2 * pad, 8.f + size.y + 2 * pad), IM_COL32(0, 0, 0, 190));
-        dl->AddText(ImVec2(8.f + pad, 8.f + pad), IM_COL32(255, 255, 255, 255), text.c_str());
+        TextLayout l = layoutText(8, 8, text);
+        auto v = [](int x, int y) { return ImVec2(float(x), float(y)); };
+        // drawText darkens the box to a third of the picture: black at 2/3 alpha.
+        dl->AddRectFilled(v(l.box[0], l.box[1]), v(l.box[2], l.box[3]), IM_COL32(0, 0, 0, 170));
+        for (const auto& q : l.quads) dl->AddRectFilled(v(q[0], q[1]), v(q[2], q[3]), IM_COL32(255, 255, 255, 255));
     }
 
     void watchFilesOf(const Plan& plan) {
@@ -603,12 +602,29 @@ private:
             break;
         }
         case ViewCommand::Kind::Save: save(c.name.empty() ? nextFreeName("glimmer", ".png") : c.name, c.unit == -2); break;
-        case ViewCommand::Kind::Show:
-            if (c.unit < 0) s_.shownTexture = -1;
-            else if (s_.good && s_.good->plan.finalUnits.count(c.unit)) s_.shownTexture = s_.good->plan.finalUnits.at(c.unit);
-            else std::cerr << "glimmer view: show: no texture on unit " << c.unit << "\n";
+        case ViewCommand::Kind::Show: textureOnUnit("show", c.unit, s_.shownTexture); break;
+        case ViewCommand::Kind::Values: s_.showValues = c.on; break;
+        case ViewCommand::Kind::Probe:
+            if (!c.report) s_.probe = c.on;
+            else if (!s_.probe) std::cerr << "glimmer view: probe: off (probe on turns it on)\n";
+            else if (s_.probeText.empty()) std::cerr << "glimmer view: probe: the pointer is not over the picture\n";
+            else std::cerr << "glimmer view: probe " << s_.probeText << "\n";
+            break;
+        case ViewCommand::Kind::Split:
+            if (c.on && textureOnUnit("split", c.unit, s_.compareLeft) && textureOnUnit("split", c.right, s_.compareRight))
+                s_.compare = true;
+            else if (!c.on) s_.compare = false;
             break;
         }
+        return false;
+    }
+
+    // The texture on a texture unit (the screen for -1) into `texture`;
+    // false, with a message, when no target is on that unit.
+    bool textureOnUnit(const char* command, int unit, int& texture) {
+        if (unit < 0) return texture = -1, true;
+        if (s_.good && s_.good->plan.finalUnits.count(unit)) return texture = s_.good->plan.finalUnits.at(unit), true;
+        std::cerr << "glimmer view: " << command << ": no texture on unit " << unit << "\n";
         return false;
     }
 

@@ -94,12 +94,30 @@ TEST(ViewCommands, ParsesEveryCommand) {
     ASSERT_TRUE(colour) << err;
     EXPECT_EQ(colour->text, "1,0.5,0,1");
     EXPECT_EQ(set->text, "3.5");
+    auto values = parseViewCommand("values on", err);
+    ASSERT_TRUE(values) << err;
+    EXPECT_EQ(values->kind, ViewCommand::Kind::Values);
+    EXPECT_TRUE(values->on);
+    EXPECT_FALSE(parseViewCommand("values off", err)->on);
+    auto probe = parseViewCommand("probe", err);
+    ASSERT_TRUE(probe) << err;
+    EXPECT_EQ(probe->kind, ViewCommand::Kind::Probe);
+    EXPECT_TRUE(probe->report);
+    EXPECT_FALSE(parseViewCommand("probe on", err)->report);
+    EXPECT_FALSE(parseViewCommand("probe off", err)->on);
+    auto split = parseViewCommand("split 6 screen", err);
+    ASSERT_TRUE(split) << err;
+    EXPECT_EQ(split->kind, ViewCommand::Kind::Split);
+    EXPECT_TRUE(split->on);
+    EXPECT_EQ(split->unit, 6);
+    EXPECT_EQ(split->right, -1);
+    EXPECT_FALSE(parseViewCommand("split off", err)->on);
 }
 
 TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     std::string err;
     EXPECT_FALSE(parseViewCommand("jump", err));
-    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, help, frames, quit)");
+    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, values, probe, split, help, frames, quit)");
     EXPECT_FALSE(parseViewCommand("set uAdd", err));
     EXPECT_EQ(err, "usage: set NAME VALUE");
     EXPECT_FALSE(parseViewCommand("set uAdd lots", err));
@@ -108,6 +126,14 @@ TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     EXPECT_EQ(err, "set uColor: '1,0,' is not a number (or numbers separated by commas)");
     EXPECT_FALSE(parseViewCommand("show 40", err));
     EXPECT_EQ(err, "show: '40' is not a texture unit (0 to 31) or 'screen'");
+    EXPECT_FALSE(parseViewCommand("values maybe", err));
+    EXPECT_EQ(err, "usage: values on|off");
+    EXPECT_FALSE(parseViewCommand("probe 3", err));
+    EXPECT_EQ(err, "usage: probe [on|off]");
+    EXPECT_FALSE(parseViewCommand("split 6", err));
+    EXPECT_EQ(err, "usage: split LEFT_UNIT|screen RIGHT_UNIT|screen, or split off");
+    EXPECT_FALSE(parseViewCommand("split 6 99", err));
+    EXPECT_EQ(err, "split: '99' is not a texture unit (0 to 31) or 'screen'");
     EXPECT_FALSE(parseViewCommand("# a comment", err));
     EXPECT_EQ(err, "");
     EXPECT_FALSE(parseViewCommand("   ", err));

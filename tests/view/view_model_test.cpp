@@ -115,7 +115,7 @@ TEST(WindowLayout, PanelBesideThePictureAndHidden) {
 TEST(Help, ListsEveryCommandOnALineOfItsOwn) {
     std::string help = helpText();
     std::string err;
-    for (const char* word : {"set", "reload", "save", "show", "help", "quit"}) {
+    for (const char* word : {"set", "reload", "save", "show", "values", "probe", "split", "help", "quit"}) {
         EXPECT_NE(help.find(std::string("\n  ") + word + " "), std::string::npos) << word;
     }
     for (const char* key : {"space", "H ", "F ", "R ", "0 ", "S ", "Q, Esc"}) EXPECT_NE(help.find(key), std::string::npos) << key;
@@ -124,6 +124,18 @@ TEST(Help, ListsEveryCommandOnALineOfItsOwn) {
     EXPECT_EQ(h->kind, ViewCommand::Kind::Help);
     EXPECT_FALSE(parseViewCommand("help me", err));
     EXPECT_EQ(err, "usage: help");
+}
+
+// The panel follows the monitor's content scale (GLFW's; Xvfb always says
+// 1) unless --ui-scale is given; a scale below 1 is never used.
+TEST(UiScale, OptionElseTheMonitorsContentScale) {
+    EXPECT_EQ(chooseUiScale(0, 1.f, 1.f), 1.f);      // Xvfb, a plain monitor
+    EXPECT_EQ(chooseUiScale(0, 2.f, 2.f), 2.f);      // a HiDPI monitor
+    EXPECT_EQ(chooseUiScale(0, 1.25f, 1.5f), 1.5f);  // the larger of the two
+    EXPECT_EQ(chooseUiScale(0, 0.75f, 0.75f), 1.f);  // never smaller than 1
+    EXPECT_EQ(chooseUiScale(0, 0.f, 0.f), 1.f);      // a monitor that reports nothing
+    EXPECT_EQ(chooseUiScale(1.5, 2.f, 2.f), 1.5f);   // --ui-scale wins
+    EXPECT_EQ(chooseUiScale(2, 1.f, 1.f), 2.f);
 }
 
 }  // namespace

@@ -83,6 +83,11 @@ bool ViewerProcess::waitForLog(const std::string& needle, int count, std::chrono
 int ViewerProcess::quit(std::chrono::seconds timeout) {
     if (exited_) return exitCode_;
     send("quit");
+    return waitExit(timeout);
+}
+
+int ViewerProcess::waitExit(std::chrono::seconds timeout) {
+    if (exited_) return exitCode_;
     auto end = Clock::now() + timeout;
     while (Clock::now() < end) {
         int status = 0;

@@ -23,6 +23,9 @@ public:
     // Waits until stderr holds `needle` at least `count` times; false on timeout.
     bool waitForLog(const std::string& needle, int count = 1, std::chrono::seconds timeout = std::chrono::seconds(30));
     std::string log() const;
+    // Waits for the process to end on its own (a key, --exec quit); its
+    // exit code, or -1 when it is still running at the deadline.
+    int waitExit(std::chrono::seconds timeout);
     // Sends quit and waits; the exit code, or -1.
     int quit(std::chrono::seconds timeout = std::chrono::seconds(20));
 
