@@ -33,6 +33,16 @@ std::vector<std::string> blurKernelDirs(const std::string& dataDir);
 // The methods, by family, each at a few strengths.
 std::vector<BlurMethod> blurMethods();
 
+// One method of each family (superblur, sep9, linear5, dual Kawase) with the
+// parameter that brings its impulse sigma nearest `sigma`: uHalfSize for
+// superblur (at most kMatchMaxHalfSize), the number of horizontal+vertical
+// pairs for the separable kernels (at most kMatchMaxPairs: sigma grows as the
+// square root of the passes), iterations and tap offset (0.5 to 3) for dual
+// Kawase. Integer parameters cannot hit every sigma: impulseSigma of each
+// says how close it came, and callers report that, not the target.
+constexpr int kMatchMaxHalfSize = 40, kMatchMaxPairs = 32;
+std::vector<BlurMethod> blurMethodsMatched(double sigma);
+
 // The standard deviation of a blur, from the second moment of its CPU
 // reference's response to one bright texel: the Gaussian it is measured
 // against for model error has this sigma.
