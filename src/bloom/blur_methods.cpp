@@ -175,20 +175,19 @@ std::vector<BlurMethod> blurMethodsMatched(double sigma) {
             c.push_back(separableMethod(k, p));
         out.push_back(nearest(c, sigma));
     }
-    // Dual Kawase: the fewest iterations (cheapest) whose offset, from 0.5
-    // to 3 in steps of 0.25, comes within 3% of the target; else the nearest
-    // of all of them.
-    c.clear();
+    // Dual Kawase: the iteration count whose published kernel (offset 1) is
+    // nearest the target on a log scale, then the offset (0.5 to 2.5 in
+    // steps of 1/8) that fine-tunes it. Fewer iterations with a large offset
+    // could reach the same sigma, but their taps spread apart and the blur
+    // shows holes, which is not how the method is used.
+    int bestIt = 1;
+    double bestRatio = 0;
     for (int it = 1; it <= 5; ++it) {
-        std::vector<BlurMethod> level;
-        for (int q = 2; q <= 12; ++q) level.push_back(kawaseMethod(it, q * 0.25));
-        BlurMethod m = nearest(level, sigma);
-        if (std::fabs(impulseSigma(m.reference) - sigma) <= 0.03 * sigma) {
-            c = {m};
-            break;
-        }
-        c.push_back(m);
+        const double r = std::fabs(std::log(impulseSigma(kawaseMethod(it, 1.0).reference) / sigma));
+        if (it == 1 || r < bestRatio) bestIt = it, bestRatio = r;
     }
+    c.clear();
+    for (int q = 4; q <= 20; ++q) c.push_back(kawaseMethod(bestIt, q * 0.125));
     out.push_back(nearest(c, sigma));
     return out;
 }

@@ -37,8 +37,9 @@ std::vector<BlurMethod> blurMethods();
 // parameter that brings its impulse sigma nearest `sigma`: uHalfSize for
 // superblur (at most kMatchMaxHalfSize), the number of horizontal+vertical
 // pairs for the separable kernels (at most kMatchMaxPairs: sigma grows as the
-// square root of the passes), iterations and tap offset (0.5 to 3) for dual
-// Kawase. Integer parameters cannot hit every sigma: impulseSigma of each
+// square root of the passes), for dual Kawase the iteration count whose
+// published kernel comes nearest, then its tap offset (0.5 to 2.5, steps of
+// 1/8). Integer parameters cannot hit every sigma: impulseSigma of each
 // says how close it came, and callers report that, not the target.
 constexpr int kMatchMaxHalfSize = 40, kMatchMaxPairs = 32;
 std::vector<BlurMethod> blurMethodsMatched(double sigma);
