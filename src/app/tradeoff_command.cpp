@@ -1,7 +1,9 @@
 // glimmer tradeoff: for each blur method, the time of its passes against its
 // error: numerical (against a double-precision CPU reference of the same
 // kernel) and model (against an exact Gaussian of the same sigma). Prints a
-// table, writes CSV, JSON and a Pareto chart.
+// table, writes CSV, JSON and a Pareto chart. Times are kept for every run:
+// the median places a method, its fastest and slowest run say how much a
+// difference between two methods can be trusted (reference/timing_verdict.h).
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +15,7 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include "app/commands.h"
 #include "backends/context.h"
@@ -25,6 +28,7 @@
 #include "image/test_images.h"
 #include "reference/metrics.h"
 #include "reference/pareto_chart.h"
+#include "reference/timing_verdict.h"
 #include "util/temp_dir.h"
 
 namespace fs = std::filesystem;
@@ -34,7 +38,8 @@ namespace {
 
 struct Row {
     const BlurMethod* method;
-    double ms = 0;
+    double ms = 0;  // the median run
+    TimingSpread time;
     double sigma = 0;
     double megabytes = 0;
     ErrorStats numerical, model;
@@ -66,6 +71,10 @@ void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
     sub->add_option("--repeat", o.repeat, "timed runs per method after one warm-up (default 5)");
     sub->add_option("--methods", o.methods, "only methods whose name contains one of these words");
     sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless");
+    sub->add_option("--match-sigma", o.matchSigma,
+                    "compare at one blur width: each family (superblur, sep9, linear5, dual Kawase) scaled to the "
+                    "parameter whose sigma comes nearest S (0.5 to 16); the sigma column says how near (default: "
+                    "every method at its natural width)");
     sub->add_option("-o,--output", o.output, "prefix of the files written: PREFIX.csv, .json, .png");
 }
 
@@ -78,6 +87,12 @@ int runTradeoff(const TradeoffOptions& o) {
     BackendChoice backend;
     if (!parseBackend(o.backend, backend) || o.repeat < 1) {
         std::cerr << "glimmer: error: --backend or --repeat is not valid\n";
+        return kExitUsage;
+    }
+    const bool matched = o.matchSigma != 0;
+    if (matched && !(o.matchSigma >= 0.5 && o.matchSigma <= 16)) {
+        // Above 16 the 128-texel impulse that measures sigma wraps round.
+        std::cerr << fmt::format("glimmer: error: --match-sigma {:g} is not between 0.5 and 16\n", o.matchSigma);
         return kExitUsage;
     }
     // The input, as the GPU will see it.
@@ -141,7 +156,8 @@ int runTradeoff(const TradeoffOptions& o) {
     const RgbImage in = rgbOf(input);
 
     std::vector<BlurMethod> methods;
-    for (auto& m : blurMethods()) {
+    const std::vector<BlurMethod> all = matched ? blurMethodsMatched(o.matchSigma) : blurMethods();
+    for (auto& m : all) {
         bool keep = o.methods.empty();
         for (const auto& w : o.methods) keep |= m.name.find(w) != std::string::npos;
         if (keep) methods.push_back(m);
@@ -181,7 +197,8 @@ int runTradeoff(const TradeoffOptions& o) {
         Row row;
         row.method = &m;
         row.health = healthOf(out.f32.data(), out.width, out.height);
-        row.ms = median(times);
+        row.time = spreadOf(times);
+        row.ms = row.time.median;
         row.numerical = compare(gpu, m.reference(in));
         row.sigma = impulseSigma(m.reference);
         int radius = int(std::ceil(4 * row.sigma));
@@ -192,49 +209,84 @@ int runTradeoff(const TradeoffOptions& o) {
     }
     progress.finish();
 
-    // The table.
-    std::string title = fmt::format("{} on {}, {}x{} {}, median of {}", context->name(), renderer->rendererName(),
-                                    input.width, input.height, textureFormatName(format), o.repeat);
+    // The table. The header line says which comparison this is: each method
+    // at its own width, or every family scaled to one sigma.
+    double achievedLo = 0, achievedHi = 0;
+    for (size_t i = 0; i < rows.size(); ++i) {
+        achievedLo = i ? std::min(achievedLo, rows[i].sigma) : rows[i].sigma;
+        achievedHi = i ? std::max(achievedHi, rows[i].sigma) : rows[i].sigma;
+    }
+    const std::string comparison =
+        matched ? fmt::format("matched sigma = {:g} (achieved {:.2f} to {:.2f})", o.matchSigma, achievedLo, achievedHi)
+                : "natural width";
+    std::string title = fmt::format("{} on {}, {}x{} {}, median of {}, {}", context->name(), renderer->rendererName(),
+                                    input.width, input.height, textureFormatName(format), o.repeat, comparison);
     fmt::print("{}\n", title);
-    fmt::print("{:<14}{:>6}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n", "method",
-               "taps", "ms", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st", "mod RMSE", "mod PSNR",
-               "mod max", "mod >1st", "health");
+    fmt::print("{:<16}{:>6}{:>9}{:>9}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n",
+               "method", "taps", "ms", "min", "max", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st",
+               "mod RMSE", "mod PSNR", "mod max", "mod >1st", "health");
     for (const auto& r : rows)
-        fmt::print("{:<14}{:>6}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
-                   r.method->name, r.method->tapsPerPixel, r.ms, r.megabytes, r.sigma, r.numerical.rmse,
-                   r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr,
-                   r.model.maxAbs, r.model.pixelsOverOneStep, r.health.healthy() ? "ok" : "BAD");
-    const Row* fastest = nullptr;
-    for (const auto& r : rows)
-        if (r.model.psnr >= 40 && (!fastest || r.ms < fastest->ms)) fastest = &r;
-    if (fastest)
-        fmt::print("fastest within 40 dB PSNR of the Gaussian of its own sigma: {} ({:.2f} ms, {:.1f} dB)\n",
-                   fastest->method->name, fastest->ms, fastest->model.psnr);
-    else
-        fmt::print("no method came within 40 dB PSNR of the Gaussian of its own sigma\n");
+        fmt::print("{:<16}{:>6}{:>9.2f}{:>9.2f}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | "
+                   "{:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
+                   r.method->name, r.method->tapsPerPixel, r.ms, r.time.min, r.time.max, r.megabytes, r.sigma,
+                   r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep,
+                   r.model.rmse, r.model.psnr, r.model.maxAbs, r.model.pixelsOverOneStep,
+                   r.health.healthy() ? "ok" : "BAD");
 
-    // CSV, JSON, chart.
+    // The verdict names a winner only when the runs separate it from the
+    // other candidates; a median that wins by less than the noise is a tie.
+    std::vector<TimedCandidate> candidates;
+    for (const auto& r : rows)
+        if (r.model.psnr >= 40) candidates.push_back({r.method->name, r.time});
+    const FastestVerdict verdict = fastestBeyondNoise(candidates);
+    const char* within = "within 40 dB PSNR of the Gaussian of its own sigma";
+    if (verdict.names.empty()) {
+        fmt::print("no method came {}\n", within);
+    } else if (verdict.clearWinner()) {
+        const Row& w = *std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.method->name == verdict.names[0]; });
+        fmt::print("fastest {}: {} ({:.2f} ms, runs {:.2f} to {:.2f}, {:.1f} dB){}\n", within, w.method->name, w.ms,
+                   w.time.min, w.time.max, w.model.psnr,
+                   candidates.size() > 1 ? "; its slowest run beats every other candidate's fastest" : "");
+    } else {
+        fmt::print("fastest {}: tie within noise: {} (their fastest to slowest runs overlap)\n", within,
+                   fmt::join(verdict.names, ", "));
+    }
+    if (o.repeat < 3 && !candidates.empty())
+        fmt::print("note: {} run{} per method cannot show the noise; --repeat 5 or more for a verdict to trust\n",
+                   o.repeat, o.repeat == 1 ? "" : "s");
+
+    // CSV, JSON, chart. New columns go at the end, so readers that count
+    // columns keep working.
     std::ofstream csv(o.output + ".csv");
     csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
-           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504\n";
+           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504,ms_min,ms_max,runs,target_sigma\n";
     for (const auto& r : rows)
-        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{}\n",
+        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{},"
+                           "{:.4f},{:.4f},{},{}\n",
                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
                            r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
                            r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
-                           r.health.above65504);
+                           r.health.above65504, r.time.min, r.time.max, r.time.runs,
+                           matched ? fmt::format("{:g}", o.matchSigma) : "");
     std::ofstream json(o.output + ".json");
-    json << "{\n  \"title\": \"" << title << "\",\n  \"methods\": [\n";
+    json << "{\n  \"title\": \"" << title << "\",\n  \"comparison\": "
+         << (matched ? fmt::format("{{\"matched_sigma\": {}}}", jsonNumber(o.matchSigma)) : "\"natural width\"")
+         << ",\n  \"fastest_within_40db\": {\"clear_winner\": " << (verdict.clearWinner() ? "true" : "false")
+         << ", \"methods\": [";
+    for (size_t i = 0; i < verdict.names.size(); ++i) json << (i ? ", " : "") << "\"" << verdict.names[i] << "\"";
+    json << "]},\n  \"methods\": [\n";
     for (size_t i = 0; i < rows.size(); ++i) {
         const Row& r = rows[i];
         json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
+                            "\"ms_min\": {}, \"ms_max\": {}, \"runs\": {}, "
                             "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
                             "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
                             "\"over_one_step\": {}}}, \"health\": {{\"nan\": {}, \"inf\": {}, \"negative\": {}, "
                             "\"above_65504\": {}}}}}{}\n",
                             r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
-                            jsonNumber(r.ms), jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
+                            jsonNumber(r.ms), jsonNumber(r.time.min), jsonNumber(r.time.max), r.time.runs,
+                            jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
                             jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
                             jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),
                             r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
@@ -242,9 +294,13 @@ int runTradeoff(const TradeoffOptions& o) {
     }
     json << "  ]\n}\n";
     std::vector<ChartPoint> points;
-    for (const auto& r : rows) points.push_back({r.method->name, r.ms, r.model.psnr});
-    Image chart = paretoChart(points, fmt::format("PSNR against an exact Gaussian, by time: {}, {}x{} {}",
-                                                  context->name(), input.width, input.height, textureFormatName(format)));
+    for (const auto& r : rows) points.push_back({r.method->name, r.ms, r.model.psnr, r.time.min, r.time.max});
+    Image chart = paretoChart(
+        points, fmt::format("PSNR against an exact Gaussian, by time: {}, {}x{} {}\n{}, median of {} runs", context->name(),
+                            input.width, input.height, textureFormatName(format),
+                            matched ? comparison + ", each family scaled to it"
+                                    : "natural width (each method at its own sigma)",
+                            o.repeat));
     if (!writePng(o.output + ".png", chart, why)) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;
