@@ -74,7 +74,8 @@ void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
     sub->add_option("--match-sigma", o.matchSigma,
                     "compare at one blur width: each family (superblur, sep9, linear5, dual Kawase) scaled to the "
                     "parameter whose sigma comes nearest S (0.5 to 16); the sigma column says how near (default: "
-                    "every method at its natural width)");
+                    "every method at its natural width)")
+        ->type_name("S");
     sub->add_option("-o,--output", o.output, "prefix of the files written: PREFIX.csv, .json, .png");
 }
 
