@@ -15,9 +15,9 @@
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
-#include <fmt/ranges.h>
 
 #include "app/commands.h"
+#include "app/tradeoff_report.h"
 #include "backends/context.h"
 #include "bloom/blur_methods.h"
 #include "driver/console.h"
@@ -28,7 +28,6 @@
 #include "image/test_images.h"
 #include "reference/metrics.h"
 #include "reference/pareto_chart.h"
-#include "reference/timing_verdict.h"
 #include "util/temp_dir.h"
 
 namespace fs = std::filesystem;
@@ -36,15 +35,6 @@ namespace fs = std::filesystem;
 namespace glimmer {
 namespace {
 
-struct Row {
-    const BlurMethod* method;
-    double ms = 0;  // the median run
-    TimingSpread time;
-    double sigma = 0;
-    double megabytes = 0;
-    ErrorStats numerical, model;
-    Health health;  // of the blurred target: NaN, Inf, negative, above 65504
-};
 
 int bytesPerTexel(TextureDecl::Format f) {
     switch (f) {
@@ -57,8 +47,6 @@ int bytesPerTexel(TextureDecl::Format f) {
 }
 
 RgbImage rgbOf(const Image& img) { return toRgb(img); }
-
-std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
 
 }  // namespace
 
@@ -163,7 +151,7 @@ int runTradeoff(const TradeoffOptions& o) {
         for (const auto& w : o.methods) keep |= m.name.find(w) != std::string::npos;
         if (keep) methods.push_back(m);
     }
-    std::vector<Row> rows;
+    std::vector<TradeoffRow> rows;
     Progress progress;
     for (size_t i = 0; i < methods.size(); ++i) {
         const BlurMethod& m = methods[i];
@@ -195,7 +183,7 @@ int runTradeoff(const TradeoffOptions& o) {
         }
         Image out = renderer->readTextureFloat(loaded.plan.finalUnits.at(m.outputUnit));
         RgbImage gpu = rgbOf(out);
-        Row row;
+        TradeoffRow row;
         row.method = &m;
         row.health = healthOf(out.f32.data(), out.width, out.height);
         row.time = spreadOf(times);
@@ -210,8 +198,8 @@ int runTradeoff(const TradeoffOptions& o) {
     }
     progress.finish();
 
-    // The table. The header line says which comparison this is: each method
-    // at its own width, or every family scaled to one sigma.
+    // The header line says which comparison this is: each method at its
+    // own width, or every family scaled to one sigma.
     double achievedLo = 0, achievedHi = 0;
     for (size_t i = 0; i < rows.size(); ++i) {
         achievedLo = i ? std::min(achievedLo, rows[i].sigma) : rows[i].sigma;
@@ -223,77 +211,10 @@ int runTradeoff(const TradeoffOptions& o) {
     std::string title = fmt::format("{} on {}, {}x{} {}, median of {}, {}", context->name(), renderer->rendererName(),
                                     input.width, input.height, textureFormatName(format), o.repeat, comparison);
     fmt::print("{}\n", title);
-    fmt::print("{:<16}{:>6}{:>9}{:>9}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n",
-               "method", "taps", "ms", "min", "max", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st",
-               "mod RMSE", "mod PSNR", "mod max", "mod >1st", "health");
-    for (const auto& r : rows)
-        fmt::print("{:<16}{:>6}{:>9.2f}{:>9.2f}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | "
-                   "{:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
-                   r.method->name, r.method->tapsPerPixel, r.ms, r.time.min, r.time.max, r.megabytes, r.sigma,
-                   r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep,
-                   r.model.rmse, r.model.psnr, r.model.maxAbs, r.model.pixelsOverOneStep,
-                   r.health.healthy() ? "ok" : "BAD");
-
-    // The verdict names a winner only when the runs separate it from the
-    // other candidates; a median that wins by less than the noise is a tie.
-    std::vector<TimedCandidate> candidates;
-    for (const auto& r : rows)
-        if (r.model.psnr >= 40) candidates.push_back({r.method->name, r.time});
-    const FastestVerdict verdict = fastestBeyondNoise(candidates);
-    const char* within = "within 40 dB PSNR of the Gaussian of its own sigma";
-    if (verdict.names.empty()) {
-        fmt::print("no method came {}\n", within);
-    } else if (verdict.clearWinner()) {
-        const Row& w = *std::find_if(rows.begin(), rows.end(), [&](const Row& r) { return r.method->name == verdict.names[0]; });
-        fmt::print("fastest {}: {} ({:.2f} ms, runs {:.2f} to {:.2f}, {:.1f} dB){}\n", within, w.method->name, w.ms,
-                   w.time.min, w.time.max, w.model.psnr,
-                   candidates.size() > 1 ? "; its slowest run beats every other candidate's fastest" : "");
-    } else {
-        fmt::print("fastest {}: tie within noise: {} (their fastest to slowest runs overlap)\n", within,
-                   fmt::join(verdict.names, ", "));
-    }
-    if (o.repeat < 3 && !candidates.empty())
-        fmt::print("note: {} run{} per method cannot show the noise; --repeat 5 or more for a verdict to trust\n",
-                   o.repeat, o.repeat == 1 ? "" : "s");
-
-    // CSV, JSON, chart. New columns go at the end, so readers that count
-    // columns keep working.
-    std::ofstream csv(o.output + ".csv");
-    csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
-           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504,ms_min,ms_max,runs,target_sigma\n";
-    for (const auto& r : rows)
-        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{},"
-                           "{:.4f},{:.4f},{},{}\n",
-                           r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
-                           r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
-                           r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
-                           r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
-                           r.health.above65504, r.time.min, r.time.max, r.time.runs,
-                           matched ? fmt::format("{:g}", o.matchSigma) : "");
-    std::ofstream json(o.output + ".json");
-    json << "{\n  \"title\": \"" << title << "\",\n  \"comparison\": "
-         << (matched ? fmt::format("{{\"matched_sigma\": {}}}", jsonNumber(o.matchSigma)) : "\"natural width\"")
-         << ",\n  \"fastest_within_40db\": {\"clear_winner\": " << (verdict.clearWinner() ? "true" : "false")
-         << ", \"methods\": [";
-    for (size_t i = 0; i < verdict.names.size(); ++i) json << (i ? ", " : "") << "\"" << verdict.names[i] << "\"";
-    json << "]},\n  \"methods\": [\n";
-    for (size_t i = 0; i < rows.size(); ++i) {
-        const Row& r = rows[i];
-        json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
-                            "\"ms_min\": {}, \"ms_max\": {}, \"runs\": {}, "
-                            "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
-                            "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
-                            "\"over_one_step\": {}}}, \"health\": {{\"nan\": {}, \"inf\": {}, \"negative\": {}, "
-                            "\"above_65504\": {}}}}}{}\n",
-                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
-                            jsonNumber(r.ms), jsonNumber(r.time.min), jsonNumber(r.time.max), r.time.runs,
-                            jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
-                            jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
-                            jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),
-                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
-                            r.health.above65504, i + 1 < rows.size() ? "," : "");
-    }
-    json << "  ]\n}\n";
+    printTradeoffTable(rows);
+    const FastestVerdict verdict = printTradeoffVerdict(rows, o.repeat);
+    writeTradeoffCsv(o.output + ".csv", rows, matched ? o.matchSigma : 0);
+    writeTradeoffJson(o.output + ".json", title, rows, verdict, matched ? o.matchSigma : 0);
     std::vector<ChartPoint> points;
     for (const auto& r : rows) points.push_back({r.method->name, r.ms, r.model.psnr, r.time.min, r.time.max});
     Image chart = paretoChart(
