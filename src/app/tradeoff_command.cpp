@@ -1,7 +1,9 @@
 // glimmer tradeoff: for each blur method, the time of its passes against its
 // error: numerical (against a double-precision CPU reference of the same
 // kernel) and model (against an exact Gaussian of the same sigma). Prints a
-// table, writes CSV, JSON and a Pareto chart.
+// table, writes CSV, JSON and a Pareto chart. Times are kept for every run:
+// the median places a method, its fastest and slowest run say how much a
+// difference between two methods can be trusted (reference/timing_verdict.h).
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "app/tradeoff_report.h"
 #include "backends/context.h"
 #include "bloom/blur_methods.h"
 #include "driver/console.h"
@@ -32,14 +35,6 @@ namespace fs = std::filesystem;
 namespace glimmer {
 namespace {
 
-struct Row {
-    const BlurMethod* method;
-    double ms = 0;
-    double sigma = 0;
-    double megabytes = 0;
-    ErrorStats numerical, model;
-    Health health;  // of the blurred target: NaN, Inf, negative, above 65504
-};
 
 int bytesPerTexel(TextureDecl::Format f) {
     switch (f) {
@@ -53,8 +48,6 @@ int bytesPerTexel(TextureDecl::Format f) {
 
 RgbImage rgbOf(const Image& img) { return toRgb(img); }
 
-std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
-
 }  // namespace
 
 void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
@@ -66,6 +59,11 @@ void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
     sub->add_option("--repeat", o.repeat, "timed runs per method after one warm-up (default 5)");
     sub->add_option("--methods", o.methods, "only methods whose name contains one of these words");
     sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless");
+    sub->add_option("--match-sigma", o.matchSigma,
+                    "compare at one blur width: each family (superblur, sep9, linear5, dual Kawase) scaled to the "
+                    "parameter whose sigma comes nearest S (0.5 to 16); the sigma column says how near (default: "
+                    "every method at its natural width)")
+        ->type_name("S");
     sub->add_option("-o,--output", o.output, "prefix of the files written: PREFIX.csv, .json, .png");
 }
 
@@ -78,6 +76,12 @@ int runTradeoff(const TradeoffOptions& o) {
     BackendChoice backend;
     if (!parseBackend(o.backend, backend) || o.repeat < 1) {
         std::cerr << "glimmer: error: --backend or --repeat is not valid\n";
+        return kExitUsage;
+    }
+    const bool matched = o.matchSigma != 0;
+    if (matched && !(o.matchSigma >= 0.5 && o.matchSigma <= 16)) {
+        // Above 16 the 128-texel impulse that measures sigma wraps round.
+        std::cerr << fmt::format("glimmer: error: --match-sigma {:g} is not between 0.5 and 16\n", o.matchSigma);
         return kExitUsage;
     }
     // The input, as the GPU will see it.
@@ -141,12 +145,13 @@ int runTradeoff(const TradeoffOptions& o) {
     const RgbImage in = rgbOf(input);
 
     std::vector<BlurMethod> methods;
-    for (auto& m : blurMethods()) {
+    const std::vector<BlurMethod> all = matched ? blurMethodsMatched(o.matchSigma) : blurMethods();
+    for (auto& m : all) {
         bool keep = o.methods.empty();
         for (const auto& w : o.methods) keep |= m.name.find(w) != std::string::npos;
         if (keep) methods.push_back(m);
     }
-    std::vector<Row> rows;
+    std::vector<TradeoffRow> rows;
     Progress progress;
     for (size_t i = 0; i < methods.size(); ++i) {
         const BlurMethod& m = methods[i];
@@ -178,10 +183,11 @@ int runTradeoff(const TradeoffOptions& o) {
         }
         Image out = renderer->readTextureFloat(loaded.plan.finalUnits.at(m.outputUnit));
         RgbImage gpu = rgbOf(out);
-        Row row;
+        TradeoffRow row;
         row.method = &m;
         row.health = healthOf(out.f32.data(), out.width, out.height);
-        row.ms = median(times);
+        row.time = spreadOf(times);
+        row.ms = row.time.median;
         row.numerical = compare(gpu, m.reference(in));
         row.sigma = impulseSigma(m.reference);
         int radius = int(std::ceil(4 * row.sigma));
@@ -192,59 +198,31 @@ int runTradeoff(const TradeoffOptions& o) {
     }
     progress.finish();
 
-    // The table.
-    std::string title = fmt::format("{} on {}, {}x{} {}, median of {}", context->name(), renderer->rendererName(),
-                                    input.width, input.height, textureFormatName(format), o.repeat);
-    fmt::print("{}\n", title);
-    fmt::print("{:<14}{:>6}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n", "method",
-               "taps", "ms", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st", "mod RMSE", "mod PSNR",
-               "mod max", "mod >1st", "health");
-    for (const auto& r : rows)
-        fmt::print("{:<14}{:>6}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
-                   r.method->name, r.method->tapsPerPixel, r.ms, r.megabytes, r.sigma, r.numerical.rmse,
-                   r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr,
-                   r.model.maxAbs, r.model.pixelsOverOneStep, r.health.healthy() ? "ok" : "BAD");
-    const Row* fastest = nullptr;
-    for (const auto& r : rows)
-        if (r.model.psnr >= 40 && (!fastest || r.ms < fastest->ms)) fastest = &r;
-    if (fastest)
-        fmt::print("fastest within 40 dB PSNR of the Gaussian of its own sigma: {} ({:.2f} ms, {:.1f} dB)\n",
-                   fastest->method->name, fastest->ms, fastest->model.psnr);
-    else
-        fmt::print("no method came within 40 dB PSNR of the Gaussian of its own sigma\n");
-
-    // CSV, JSON, chart.
-    std::ofstream csv(o.output + ".csv");
-    csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
-           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504\n";
-    for (const auto& r : rows)
-        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{}\n",
-                           r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
-                           r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
-                           r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
-                           r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
-                           r.health.above65504);
-    std::ofstream json(o.output + ".json");
-    json << "{\n  \"title\": \"" << title << "\",\n  \"methods\": [\n";
+    // The header line says which comparison this is: each method at its
+    // own width, or every family scaled to one sigma.
+    double achievedLo = 0, achievedHi = 0;
     for (size_t i = 0; i < rows.size(); ++i) {
-        const Row& r = rows[i];
-        json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
-                            "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
-                            "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
-                            "\"over_one_step\": {}}}, \"health\": {{\"nan\": {}, \"inf\": {}, \"negative\": {}, "
-                            "\"above_65504\": {}}}}}{}\n",
-                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
-                            jsonNumber(r.ms), jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
-                            jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
-                            jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),
-                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
-                            r.health.above65504, i + 1 < rows.size() ? "," : "");
+        achievedLo = i ? std::min(achievedLo, rows[i].sigma) : rows[i].sigma;
+        achievedHi = i ? std::max(achievedHi, rows[i].sigma) : rows[i].sigma;
     }
-    json << "  ]\n}\n";
+    const std::string comparison =
+        matched ? fmt::format("matched sigma = {:g} (achieved {:.2f} to {:.2f})", o.matchSigma, achievedLo, achievedHi)
+                : "natural width";
+    std::string title = fmt::format("{} on {}, {}x{} {}, median of {}, {}", context->name(), renderer->rendererName(),
+                                    input.width, input.height, textureFormatName(format), o.repeat, comparison);
+    fmt::print("{}\n", title);
+    printTradeoffTable(rows);
+    const FastestVerdict verdict = printTradeoffVerdict(rows, o.repeat);
+    writeTradeoffCsv(o.output + ".csv", rows, matched ? o.matchSigma : 0);
+    writeTradeoffJson(o.output + ".json", title, rows, verdict, matched ? o.matchSigma : 0);
     std::vector<ChartPoint> points;
-    for (const auto& r : rows) points.push_back({r.method->name, r.ms, r.model.psnr});
-    Image chart = paretoChart(points, fmt::format("PSNR against an exact Gaussian, by time: {}, {}x{} {}",
-                                                  context->name(), input.width, input.height, textureFormatName(format)));
+    for (const auto& r : rows) points.push_back({r.method->name, r.ms, r.model.psnr, r.time.min, r.time.max});
+    Image chart = paretoChart(
+        points, fmt::format("PSNR against an exact Gaussian, by time: {}, {}x{} {}\n{}, median of {} runs", context->name(),
+                            input.width, input.height, textureFormatName(format),
+                            matched ? comparison + ", each family scaled to it"
+                                    : "natural width (each method at its own sigma)",
+                            o.repeat));
     if (!writePng(o.output + ".png", chart, why)) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;

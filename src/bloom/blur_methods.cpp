@@ -31,7 +31,7 @@ std::string separable(const std::string& frag, const std::string& image, int w, 
     return s + "RenderToTexture\n";
 }
 
-std::string kawase(const std::string& image, int w, int h, const std::string& format, int iterations) {
+std::string kawase(const std::string& image, int w, int h, const std::string& format, int iterations, double offset) {
     std::string s = header(image, format, w, h);
     // Down to units 12, 13, ...; up again through 12 + k, ending in 10.
     std::vector<std::pair<int, int>> sizes = {{w, h}};
@@ -44,13 +44,13 @@ std::string kawase(const std::string& image, int w, int h, const std::string& fo
     s += "Fragment kawase_down.frag\n";
     int src = 5;
     for (int k = 1; k <= iterations; ++k) {
-        s += fmt::format("RenderToTexture {}\nProgram D{} ImageUnit {} uOffset 1\nQuadXY 0 1\n", 11 + k, k, src);
+        s += fmt::format("RenderToTexture {}\nProgram D{} ImageUnit {} uOffset {}\nQuadXY 0 1\n", 11 + k, k, src, offset);
         src = 11 + k;
     }
     s += "Fragment kawase_up.frag\n";
     for (int k = iterations - 1; k >= 0; --k) {
         int dst = k == 0 ? 10 : 20 + k;
-        s += fmt::format("RenderToTexture {}\nProgram U{} ImageUnit {} uOffset 1\nQuadXY 0 1\n", dst, k, src);
+        s += fmt::format("RenderToTexture {}\nProgram U{} ImageUnit {} uOffset {}\nQuadXY 0 1\n", dst, k, src, offset);
         src = dst;
     }
     return s + "RenderToTexture\n";
@@ -63,6 +63,83 @@ std::string superblur(const std::string& image, int w, int h, const std::string&
                        half);
 }
 
+BlurMethod superblurMethod(int half) {
+    BlurMethod m;
+    int side = 2 * (half | 1) + 1;
+    m.name = fmt::format("superblur h{}", half);
+    m.family = "brute force (seed superblur)";
+    m.tapsPerPixel = side * side;
+    m.passes = 1;
+    m.texelsWrittenPerPixel = 1;
+    m.script = [half](const std::string& i, int w, int h, const std::string& f) { return superblur(i, w, h, f, half); };
+    m.reference = [half](const RgbImage& img) { return superblurReference(img, half); };
+    return m;
+}
+
+// The LearnOpenGL kernel, as published (9 fetches a pass) and with bilinear
+// tap merging (5): one CPU reference serves both, so the merged version's
+// numerical error includes what merging costs on a GPU.
+struct Separable {
+    const char* name;
+    const char* family;
+    const char* frag;
+    int tapsPerPass;
+};
+const Separable kSeparables[] = {{"sep9", "separable 9-tap (LearnOpenGL)", "gauss9.frag", 9},
+                                 {"linear5", "linear-sampled 9-tap", "linear5.frag", 5}};
+
+BlurMethod separableMethod(const Separable& k, int pairs) {
+    BlurMethod m;
+    m.name = fmt::format("{} x{}", k.name, pairs);
+    m.family = k.family;
+    m.tapsPerPixel = 2 * k.tapsPerPass * pairs;
+    m.passes = 2 * pairs;
+    m.texelsWrittenPerPixel = 2.0 * pairs;
+    std::string frag = k.frag;
+    m.script = [pairs, frag](const std::string& i, int w, int h, const std::string& f) {
+        return separable(frag, i, w, h, f, pairs);
+    };
+    m.reference = [pairs](const RgbImage& img) { return separableBlur(img, learnOpenGLWeights(), pairs, Wrap::Repeat); };
+    return m;
+}
+
+// offset 1 is the published kernel; the name says any other.
+BlurMethod kawaseMethod(int it, double offset) {
+    BlurMethod m;
+    m.name = offset == 1.0 ? fmt::format("kawase x{}", it) : fmt::format("kawase x{} o{:g}", it, offset);
+    m.family = "dual Kawase (Bjorge 2015)";
+    m.passes = 2 * it;
+    // Down passes read 5 taps per output texel, up passes 8, each at a
+    // quarter of the texels of the level above.
+    double taps = 0, written = 0;
+    for (int k = 1; k <= it; ++k) {
+        taps += 5.0 / std::pow(4.0, k);
+        written += 1.0 / std::pow(4.0, k);
+    }
+    for (int k = 0; k < it; ++k) {
+        taps += 8.0 / std::pow(4.0, k);
+        written += 1.0 / std::pow(4.0, k);
+    }
+    m.tapsPerPixel = int(std::lround(taps));
+    m.texelsWrittenPerPixel = written;
+    m.script = [it, offset](const std::string& i, int w, int h, const std::string& f) {
+        return kawase(i, w, h, f, it, offset);
+    };
+    m.reference = [it, offset](const RgbImage& img) { return dualKawaseBlur(img, it, offset, Wrap::Repeat); };
+    return m;
+}
+
+// Of the candidates, the one whose impulse sigma is nearest the target.
+BlurMethod nearest(const std::vector<BlurMethod>& candidates, double target) {
+    const BlurMethod* best = nullptr;
+    double bestDiff = 0;
+    for (const auto& m : candidates) {
+        const double d = std::fabs(impulseSigma(m.reference) - target);
+        if (!best || d < bestDiff) best = &m, bestDiff = d;
+    }
+    return *best;
+}
+
 }  // namespace
 
 std::vector<std::string> blurKernelDirs(const std::string& dataDir) {
@@ -72,68 +149,46 @@ std::vector<std::string> blurKernelDirs(const std::string& dataDir) {
 
 std::vector<BlurMethod> blurMethods() {
     std::vector<BlurMethod> out;
-    for (int half : {1, 5, 11}) {
-        BlurMethod m;
-        int side = 2 * (half | 1) + 1;
-        m.name = fmt::format("superblur h{}", half);
-        m.family = "brute force (seed superblur)";
-        m.tapsPerPixel = side * side;
-        m.passes = 1;
-        m.texelsWrittenPerPixel = 1;
-        m.script = [half](const std::string& i, int w, int h, const std::string& f) { return superblur(i, w, h, f, half); };
-        m.reference = [half](const RgbImage& img) { return superblurReference(img, half); };
-        out.push_back(m);
+    for (int half : {1, 5, 11}) out.push_back(superblurMethod(half));
+    for (const Separable& k : kSeparables)
+        for (int pairs : {1, 2, 4}) out.push_back(separableMethod(k, pairs));
+    for (int it : {2, 3, 4}) out.push_back(kawaseMethod(it, 1.0));
+    return out;
+}
+
+std::vector<BlurMethod> blurMethodsMatched(double sigma) {
+    std::vector<BlurMethod> out;
+    // superblur: sigma grows about half a texel per step of uHalfSize
+    // (h5: 2.75, h11: 5.71); try the steps around that estimate.
+    std::vector<BlurMethod> c;
+    const int guess = std::max(1, int(std::lround(2 * sigma)));
+    for (int half = std::max(1, guess - 3); half <= std::min(kMatchMaxHalfSize, guess + 3); ++half)
+        c.push_back(superblurMethod(half));
+    if (c.empty()) c.push_back(superblurMethod(kMatchMaxHalfSize));
+    out.push_back(nearest(c, sigma));
+    // Separable pairs: variances add, so N pairs have sigma1 * sqrt(N).
+    for (const Separable& k : kSeparables) {
+        const double sigma1 = impulseSigma(separableMethod(k, 1).reference);
+        const int pairs = std::clamp(int(std::lround(sigma * sigma / (sigma1 * sigma1))), 1, kMatchMaxPairs);
+        c.clear();
+        for (int p = std::max(1, pairs - 1); p <= std::min(kMatchMaxPairs, pairs + 1); ++p)
+            c.push_back(separableMethod(k, p));
+        out.push_back(nearest(c, sigma));
     }
-    // The LearnOpenGL kernel, as published (9 fetches a pass) and with
-    // bilinear tap merging (5): one CPU reference serves both, so the
-    // merged version's numerical error includes what merging costs on a GPU.
-    struct Separable {
-        const char* name;
-        const char* family;
-        const char* frag;
-        int tapsPerPass;
-    };
-    for (const Separable& k : {Separable{"sep9", "separable 9-tap (LearnOpenGL)", "gauss9.frag", 9},
-                               Separable{"linear5", "linear-sampled 9-tap", "linear5.frag", 5}}) {
-        for (int pairs : {1, 2, 4}) {
-            BlurMethod m;
-            m.name = fmt::format("{} x{}", k.name, pairs);
-            m.family = k.family;
-            m.tapsPerPixel = 2 * k.tapsPerPass * pairs;
-            m.passes = 2 * pairs;
-            m.texelsWrittenPerPixel = 2.0 * pairs;
-            std::string frag = k.frag;
-            m.script = [pairs, frag](const std::string& i, int w, int h, const std::string& f) {
-                return separable(frag, i, w, h, f, pairs);
-            };
-            m.reference = [pairs](const RgbImage& img) {
-                return separableBlur(img, learnOpenGLWeights(), pairs, Wrap::Repeat);
-            };
-            out.push_back(m);
-        }
+    // Dual Kawase: the iteration count whose published kernel (offset 1) is
+    // nearest the target on a log scale, then the offset (0.5 to 2.5 in
+    // steps of 1/8) that fine-tunes it. Fewer iterations with a large offset
+    // could reach the same sigma, but their taps spread apart and the blur
+    // shows holes, which is not how the method is used.
+    int bestIt = 1;
+    double bestRatio = 0;
+    for (int it = 1; it <= 5; ++it) {
+        const double r = std::fabs(std::log(impulseSigma(kawaseMethod(it, 1.0).reference) / sigma));
+        if (it == 1 || r < bestRatio) bestIt = it, bestRatio = r;
     }
-    for (int it : {2, 3, 4}) {
-        BlurMethod m;
-        m.name = fmt::format("kawase x{}", it);
-        m.family = "dual Kawase (Bjorge 2015)";
-        m.passes = 2 * it;
-        // Down passes read 5 taps per output texel, up passes 8, each at a
-        // quarter of the texels of the level above.
-        double taps = 0, written = 0;
-        for (int k = 1; k <= it; ++k) {
-            taps += 5.0 / std::pow(4.0, k);
-            written += 1.0 / std::pow(4.0, k);
-        }
-        for (int k = 0; k < it; ++k) {
-            taps += 8.0 / std::pow(4.0, k);
-            written += 1.0 / std::pow(4.0, k);
-        }
-        m.tapsPerPixel = int(std::lround(taps));
-        m.texelsWrittenPerPixel = written;
-        m.script = [it](const std::string& i, int w, int h, const std::string& f) { return kawase(i, w, h, f, it); };
-        m.reference = [it](const RgbImage& img) { return dualKawaseBlur(img, it, 1.0, Wrap::Repeat); };
-        out.push_back(m);
-    }
+    c.clear();
+    for (int q = 4; q <= 20; ++q) c.push_back(kawaseMethod(bestIt, q * 0.125));
+    out.push_back(nearest(c, sigma));
     return out;
 }
 

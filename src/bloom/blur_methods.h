@@ -33,6 +33,17 @@ std::vector<std::string> blurKernelDirs(const std::string& dataDir);
 // The methods, by family, each at a few strengths.
 std::vector<BlurMethod> blurMethods();
 
+// One method of each family (superblur, sep9, linear5, dual Kawase) with the
+// parameter that brings its impulse sigma nearest `sigma`: uHalfSize for
+// superblur (at most kMatchMaxHalfSize), the number of horizontal+vertical
+// pairs for the separable kernels (at most kMatchMaxPairs: sigma grows as the
+// square root of the passes), for dual Kawase the iteration count whose
+// published kernel comes nearest, then its tap offset (0.5 to 2.5, steps of
+// 1/8). Integer parameters cannot hit every sigma: impulseSigma of each
+// says how close it came, and callers report that, not the target.
+constexpr int kMatchMaxHalfSize = 40, kMatchMaxPairs = 32;
+std::vector<BlurMethod> blurMethodsMatched(double sigma);
+
 // The standard deviation of a blur, from the second moment of its CPU
 // reference's response to one bright texel: the Gaussian it is measured
 // against for model error has this sigma.

@@ -60,6 +60,7 @@ struct TradeoffOptions {
     std::vector<std::string> methods;
     std::string backend = "auto";
     std::string output = "tradeoff";
+    double matchSigma = 0;  // > 0: one method per family, scaled to this sigma (bloom/blur_methods.h)
 };
 
 // "512x512" -> 512, 512. False on anything else, or a side outside 1..16384.

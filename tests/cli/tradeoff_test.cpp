@@ -1,6 +1,7 @@
 // glimmer tradeoff end to end, and every bloom lab script checked.
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -41,6 +42,79 @@ TEST(CliTradeoff, WritesTableCsvJsonAndChart) {
     std::string why;
     ASSERT_TRUE(glimmer::loadImage(dir.file("t.png"), chart, why)) << why;
     EXPECT_EQ(chart.width, 800);
+}
+
+// Every run is kept: the CSV's new columns (after the old ones, which keep
+// their places) hold the fastest and slowest run around the median, the JSON
+// the same and the verdict, and the header says which comparison it is.
+TEST(CliTradeoff, KeepsTheSpreadOfTheRuns) {
+    TempDir dir;
+    auto r = runGlimmer({"tradeoff", "--size", "32x32", "--methods", "linear5 x1", "kawase x2", "--repeat", "3",
+                         "--backend", "osmesa", "-o", dir.file("t")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("median of 3, natural width"), std::string::npos) << r.out;
+    // Either a named winner beyond the noise or a tie: never a bare name.
+    const bool winner = r.out.find("its slowest run beats every other candidate's fastest") != std::string::npos;
+    const bool tie = r.out.find("tie within noise: ") != std::string::npos;
+    const bool none = r.out.find("no method came within 40 dB") != std::string::npos;
+    EXPECT_EQ(int(winner) + int(tie) + int(none), 1) << r.out;
+    std::ifstream csv(dir.file("t.csv"));
+    std::string header, line;
+    std::getline(csv, header);
+    EXPECT_NE(header.find(",above_65504,ms_min,ms_max,runs,target_sigma"), std::string::npos) << header;
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+        ASSERT_EQ(cells.size(), 22u) << line;  // target_sigma is empty at natural width
+        const double ms = std::stod(cells[4]), lo = std::stod(cells[19]), hi = std::stod(cells[20]);
+        EXPECT_LE(lo, ms) << line;
+        EXPECT_LE(ms, hi) << line;
+        EXPECT_GT(lo, 0.0) << line;
+        EXPECT_EQ(cells[21], "3") << line;
+    }
+    EXPECT_EQ(rows, 2);
+    std::ifstream json(dir.file("t.json"));
+    std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"comparison\": \"natural width\""), std::string::npos) << text;
+    EXPECT_NE(text.find("\"fastest_within_40db\": {\"clear_winner\": "), std::string::npos) << text;
+    EXPECT_NE(text.find("\"runs\": 3"), std::string::npos) << text;
+}
+
+// --match-sigma: one method per family, each near the target, and the
+// header, CSV and JSON say it is a matched comparison.
+TEST(CliTradeoff, MatchSigmaScalesEachFamily) {
+    TempDir dir;
+    auto r = runGlimmer({"tradeoff", "--size", "32x32", "--match-sigma", "3", "--repeat", "1", "--backend", "osmesa",
+                         "-o", dir.file("m")});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.out.find("matched sigma = 3 (achieved "), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("note: 1 run per method cannot show the noise"), std::string::npos) << r.out;
+    std::ifstream csv(dir.file("m.csv"));
+    std::string line;
+    std::getline(csv, line);
+    int rows = 0;
+    while (std::getline(csv, line)) {
+        ++rows;
+        std::vector<std::string> cells;
+        std::stringstream ss(line);
+        for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
+        ASSERT_EQ(cells.size(), 23u) << line;
+        EXPECT_EQ(cells[22], "3") << line;
+        EXPECT_NEAR(std::stod(cells[6]), 3.0, 0.6) << line;  // the achieved sigma
+    }
+    EXPECT_EQ(rows, 4);  // superblur, sep9, linear5, dual Kawase
+    std::ifstream json(dir.file("m.json"));
+    std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
+    EXPECT_NE(text.find("\"comparison\": {\"matched_sigma\": 3}"), std::string::npos) << text;
+}
+
+TEST(CliTradeoff, MatchSigmaOutOfRangeIsAUsageError) {
+    auto r = runGlimmer({"tradeoff", "--match-sigma", "40", "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 2);
+    EXPECT_NE(r.err.find("--match-sigma 40 is not between 0.5 and 16"), std::string::npos) << r.err;
 }
 
 TEST(CliTradeoff, UnknownFormatIsAUsageError) {

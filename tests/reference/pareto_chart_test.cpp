@@ -46,30 +46,58 @@ TEST(ParetoChart, FrontIsTheUndominatedPoints) {
     EXPECT_EQ(paretoFront(kPoints, ChartMetric::Rmse), (std::vector<size_t>{0}));
 }
 
-// Times 0.5..4.0 ms: ticks of 1 from 0 to 4. PSNR 32..47.5 dB: ticks of 5
-// from 30 to 50. Each dot's centre is where those numbers put it.
+// Times 0.5..4.0 ms: a log axis from 0.5 to 5 with numbers at 0.5, 1, 2 and
+// 5. PSNR 32..47.5 dB: ticks of 5 from 30 to 50. Each dot's centre is where
+// those numbers put it.
 TEST(ParetoChart, DotsSitWhereTheAxesSay) {
     const ChartLayout l = paretoChartLayout(kPoints, ChartMetric::PsnrDb);
-    EXPECT_EQ(l.xMin, 0.0);
-    EXPECT_EQ(l.xMax, 4.0);
-    EXPECT_EQ(l.xStep, 1.0);
+    EXPECT_EQ(l.xMin, 0.5);
+    EXPECT_EQ(l.xMax, 5.0);
+    EXPECT_EQ(l.xTicks, (std::vector<double>{0.5, 1, 2, 5}));
     EXPECT_EQ(l.yMin, 30.0);
     EXPECT_EQ(l.yMax, 50.0);
     EXPECT_EQ(l.yStep, 5.0);
     const Image img = paretoChart(kPoints, "bloom lab");
-    auto col = [&](double t) { return l.left + int(std::lround(t / 4.0 * (l.right - l.left))); };
+    auto col = [&](double t) { return l.left + int(std::lround(std::log10(t / 0.5) * (l.right - l.left))); };
     auto row = [&](double db) { return l.bottom - int(std::lround((db - 30.0) / 20.0 * (l.bottom - l.top))); };
+    EXPECT_EQ(l.column(1.0), col(1.0));
+    EXPECT_EQ(l.column(1.0) - l.column(0.5), l.column(4.0) - l.column(2.0));  // equal ratios, equal distances
     for (size_t i = 0; i < 3; ++i)
         EXPECT_TRUE(pixelIs(img, col(kPoints[i].timeMs), row(kPoints[i].error), 255, 170, 0)) << kPoints[i].label;
     EXPECT_TRUE(pixelIs(img, col(4.0), row(45.0), 80, 160, 255));  // off the front: blue
     // Nothing at a place no point is.
     EXPECT_FALSE(pixelIs(img, col(2.0), row(35.0), 80, 160, 255));
     EXPECT_FALSE(pixelIs(img, col(2.0), row(35.0), 255, 170, 0));
-    // The front's line passes through the midpoint of two front dots.
+    // The front's line passes through the midpoint of two front dots (a
+    // straight line between them on the picture).
     EXPECT_TRUE(orangeNear(img, (col(1.2) + col(3.1)) / 2, (row(41.0) + row(47.5)) / 2));
     // The x axis and its tick at 2 ms.
     EXPECT_TRUE(pixelIs(img, col(2.0), l.bottom, 200, 200, 200));
     EXPECT_TRUE(pixelIs(img, col(2.0), l.bottom + 4, 200, 200, 200));
+}
+
+// Over more than three decades only the powers of ten are numbered.
+TEST(ParetoChart, WideTimeRangesNumberDecadesOnly) {
+    const ChartLayout l = paretoChartLayout({{"a", 0.03, 40}, {"b", 300, 50}}, ChartMetric::PsnrDb);
+    EXPECT_EQ(l.xMin, 0.02);
+    EXPECT_EQ(l.xMax, 500.0);
+    EXPECT_EQ(l.xTicks, (std::vector<double>{0.1, 1, 10, 100}));
+}
+
+// The bar of the runs' spread runs from the fastest to the slowest run, in a
+// darker shade of the dot's colour, and counts in the axis range.
+TEST(ParetoChart, SpreadBarsSpanTheRuns) {
+    std::vector<ChartPoint> pts = kPoints;
+    pts[1].timeMinMs = 0.9, pts[1].timeMaxMs = 1.8;
+    pts[3].timeMinMs = 3.5, pts[3].timeMaxMs = 9.0;  // beyond every median: widens the axis
+    const ChartLayout l = paretoChartLayout(pts, ChartMetric::PsnrDb);
+    EXPECT_EQ(l.xMax, 10.0);
+    const Image img = paretoChart(pts, "spread");
+    const int y = l.row(41.0);
+    EXPECT_TRUE(pixelIs(img, l.column(0.95), y, 170, 115, 20));  // front bar, left of the dot
+    EXPECT_TRUE(pixelIs(img, l.column(1.75), y, 170, 115, 20));  // and right of it
+    EXPECT_FALSE(pixelIs(img, l.column(0.85), y, 170, 115, 20)); // not past the fastest run
+    EXPECT_TRUE(pixelIs(img, l.column(8.8), l.row(45.0), 60, 110, 170));  // off the front: dark blue
 }
 
 // An exact method (+inf dB) sits on the top edge; NaN points are skipped.
@@ -80,10 +108,15 @@ TEST(ParetoChart, InfiniteAndNaNPoints) {
     const ChartLayout l = paretoChartLayout(pts, ChartMetric::PsnrDb);
     EXPECT_EQ(l.yMax, 50.0);  // the finite points set the range
     const Image img = paretoChart(pts, "with exact");
-    const int x = l.left + int(std::lround(2.0 / 4.0 * (l.right - l.left)));
-    EXPECT_TRUE(pixelIs(img, x, l.top, 255, 170, 0));  // on the front: nothing faster is better
+    EXPECT_TRUE(pixelIs(img, l.column(2.0), l.top, 255, 170, 0));  // on the front: nothing faster is better
     const std::vector<size_t> front = paretoFront(pts, ChartMetric::PsnrDb);
     EXPECT_EQ(front, (std::vector<size_t>{0, 1, 4}));
+}
+
+// A title of two lines pushes the plot down.
+TEST(ParetoChart, TwoLineTitleMovesThePlot) {
+    EXPECT_GT(paretoChartLayout(kPoints, ChartMetric::PsnrDb, 800, 520, 2).top,
+              paretoChartLayout(kPoints, ChartMetric::PsnrDb, 800, 520, 1).top);
 }
 
 TEST(ParetoChart, EmptyAndSinglePointsDraw) {
@@ -93,6 +126,8 @@ TEST(ParetoChart, EmptyAndSinglePointsDraw) {
     EXPECT_LT(one.yMin, 30.0);
     EXPECT_GT(one.yMax, 30.0);
     EXPECT_GT(one.xMax, one.xMin);
+    EXPECT_GT(one.xMin, 0.0);  // a log axis: a time of 0 sits on its left edge
+    EXPECT_EQ(one.column(0.0), one.left);
     const Image img = paretoChart({{"only", 0.0, 30.0}}, "one", ChartMetric::Rmse);
     EXPECT_EQ(img.u8.size(), size_t(800 * 520 * 4));
 }

@@ -1,0 +1,98 @@
+#include "app/tradeoff_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace glimmer {
+namespace {
+
+std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
+
+}  // namespace
+
+void printTradeoffTable(const std::vector<TradeoffRow>& rows) {
+    fmt::print("{:<16}{:>6}{:>9}{:>9}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n",
+               "method", "taps", "ms", "min", "max", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st",
+               "mod RMSE", "mod PSNR", "mod max", "mod >1st", "health");
+    for (const auto& r : rows)
+        fmt::print("{:<16}{:>6}{:>9.2f}{:>9.2f}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | "
+                   "{:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
+                   r.method->name, r.method->tapsPerPixel, r.ms, r.time.min, r.time.max, r.megabytes, r.sigma,
+                   r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep,
+                   r.model.rmse, r.model.psnr, r.model.maxAbs, r.model.pixelsOverOneStep,
+                   r.health.healthy() ? "ok" : "BAD");
+}
+
+FastestVerdict printTradeoffVerdict(const std::vector<TradeoffRow>& rows, int repeat) {
+    // A method far from a Gaussian is not a candidate however fast it is.
+    std::vector<TimedCandidate> candidates;
+    for (const auto& r : rows)
+        if (r.model.psnr >= 40) candidates.push_back({r.method->name, r.time});
+    const FastestVerdict verdict = fastestBeyondNoise(candidates);
+    const char* within = "within 40 dB PSNR of the Gaussian of its own sigma";
+    if (verdict.names.empty()) {
+        fmt::print("no method came {}\n", within);
+    } else if (verdict.clearWinner()) {
+        const TradeoffRow& w = *std::find_if(rows.begin(), rows.end(),
+                                             [&](const TradeoffRow& r) { return r.method->name == verdict.names[0]; });
+        fmt::print("fastest {}: {} ({:.2f} ms, runs {:.2f} to {:.2f}, {:.1f} dB){}\n", within, w.method->name, w.ms,
+                   w.time.min, w.time.max, w.model.psnr,
+                   candidates.size() > 1 ? "; its slowest run beats every other candidate's fastest" : "");
+    } else {
+        fmt::print("fastest {}: tie within noise: {} (their fastest to slowest runs overlap)\n", within,
+                   fmt::join(verdict.names, ", "));
+    }
+    if (repeat < 3 && !candidates.empty())
+        fmt::print("note: {} run{} per method cannot show the noise; --repeat 5 or more for a verdict to trust\n",
+                   repeat, repeat == 1 ? "" : "s");
+    return verdict;
+}
+
+void writeTradeoffCsv(const std::string& path, const std::vector<TradeoffRow>& rows, double matchSigma) {
+    std::ofstream csv(path);
+    csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
+           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504,ms_min,ms_max,runs,target_sigma\n";
+    for (const auto& r : rows)
+        csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{},"
+                           "{:.4f},{:.4f},{},{}\n",
+                           r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
+                           r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
+                           r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
+                           r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
+                           r.health.above65504, r.time.min, r.time.max, r.time.runs,
+                           matchSigma > 0 ? fmt::format("{:g}", matchSigma) : "");
+}
+
+void writeTradeoffJson(const std::string& path, const std::string& title, const std::vector<TradeoffRow>& rows,
+                       const FastestVerdict& verdict, double matchSigma) {
+    std::ofstream json(path);
+    json << "{\n  \"title\": \"" << title << "\",\n  \"comparison\": "
+         << (matchSigma > 0 ? fmt::format("{{\"matched_sigma\": {}}}", jsonNumber(matchSigma)) : "\"natural width\"")
+         << ",\n  \"fastest_within_40db\": {\"clear_winner\": " << (verdict.clearWinner() ? "true" : "false")
+         << ", \"methods\": [";
+    for (size_t i = 0; i < verdict.names.size(); ++i) json << (i ? ", " : "") << "\"" << verdict.names[i] << "\"";
+    json << "]},\n  \"methods\": [\n";
+    for (size_t i = 0; i < rows.size(); ++i) {
+        const TradeoffRow& r = rows[i];
+        json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
+                            "\"ms_min\": {}, \"ms_max\": {}, \"runs\": {}, "
+                            "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
+                            "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
+                            "\"over_one_step\": {}}}, \"health\": {{\"nan\": {}, \"inf\": {}, \"negative\": {}, "
+                            "\"above_65504\": {}}}}}{}\n",
+                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
+                            jsonNumber(r.ms), jsonNumber(r.time.min), jsonNumber(r.time.max), r.time.runs,
+                            jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
+                            jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
+                            jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),
+                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
+                            r.health.above65504, i + 1 < rows.size() ? "," : "");
+    }
+    json << "  ]\n}\n";
+}
+
+}  // namespace glimmer
