@@ -196,7 +196,19 @@ int runTradeoff(const TradeoffOptions& o) {
         row.megabytes = texels * (m.tapsPerPixel + m.texelsWrittenPerPixel) * bytesPerTexel(format) / 1e6;
         rows.push_back(row);
     }
+    // The floor, measured in this run on this context: a hand-written pass of
+    // 9 taps a pixel at the input's size and the targets' format.
+    progress.update("tradeoff: the texel-rate floor");
+    const double nineTapMs = renderer->texelRateMs(input.width, input.height, format, 9, std::max(o.repeat, 3));
     progress.finish();
+    if (nineTapMs > 0) {
+        for (auto& r : rows) r.floorMs = nineTapMs / 9.0 * r.method->tapsPerPixel;
+        fmt::print("texel-rate floor: {:.3f} ms for 9 taps a pixel, {:.2f} Gtexel/s (hand-written pass, this run){}\n",
+                   nineTapMs, 9.0 * input.width * input.height / (nineTapMs * 1e6),
+                   renderer->gpuTimers() ? ""
+                                         : "; on a CPU renderer shading, not fetching, sets the pace, so methods "
+                                           "with few taps a pass can run under it");
+    }
 
     // The header line says which comparison this is: each method at its
     // own width, or every family scaled to one sigma.

@@ -15,13 +15,14 @@ std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}
 }  // namespace
 
 void printTradeoffTable(const std::vector<TradeoffRow>& rows) {
-    fmt::print("{:<16}{:>6}{:>9}{:>9}{:>9}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n",
-               "method", "taps", "ms", "min", "max", "MB moved", "sigma", "num RMSE", "num PSNR", "num max", "num >1st",
-               "mod RMSE", "mod PSNR", "mod max", "mod >1st", "health");
+    fmt::print("{:<16}{:>6}{:>9}{:>9}{:>9}{:>9}{:>8}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n",
+               "method", "taps", "ms", "min", "max", "floor", "x floor", "MB moved", "sigma", "num RMSE", "num PSNR",
+               "num max", "num >1st", "mod RMSE", "mod PSNR", "mod max", "mod >1st", "health");
     for (const auto& r : rows)
-        fmt::print("{:<16}{:>6}{:>9.2f}{:>9.2f}{:>9.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | "
+        fmt::print("{:<16}{:>6}{:>9.2f}{:>9.2f}{:>9.2f}{:>9.2f}{:>8.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | "
                    "{:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
-                   r.method->name, r.method->tapsPerPixel, r.ms, r.time.min, r.time.max, r.megabytes, r.sigma,
+                   r.method->name, r.method->tapsPerPixel, r.ms, r.time.min, r.time.max, r.floorMs,
+                   r.floorMs > 0 ? r.ms / r.floorMs : 0.0, r.megabytes, r.sigma,
                    r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep,
                    r.model.rmse, r.model.psnr, r.model.maxAbs, r.model.pixelsOverOneStep,
                    r.health.healthy() ? "ok" : "BAD");
@@ -55,16 +56,17 @@ FastestVerdict printTradeoffVerdict(const std::vector<TradeoffRow>& rows, int re
 void writeTradeoffCsv(const std::string& path, const std::vector<TradeoffRow>& rows, double matchSigma) {
     std::ofstream csv(path);
     csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
-           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504,ms_min,ms_max,runs,target_sigma\n";
+           "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504,ms_min,ms_max,runs,target_sigma,"
+           "floor_ms\n";
     for (const auto& r : rows)
         csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{},"
-                           "{:.4f},{:.4f},{},{}\n",
+                           "{:.4f},{:.4f},{},{},{:.4f}\n",
                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
                            r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
                            r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
                            r.health.above65504, r.time.min, r.time.max, r.time.runs,
-                           matchSigma > 0 ? fmt::format("{:g}", matchSigma) : "");
+                           matchSigma > 0 ? fmt::format("{:g}", matchSigma) : "", r.floorMs);
 }
 
 void writeTradeoffJson(const std::string& path, const std::string& title, const std::vector<TradeoffRow>& rows,
@@ -79,13 +81,13 @@ void writeTradeoffJson(const std::string& path, const std::string& title, const 
     for (size_t i = 0; i < rows.size(); ++i) {
         const TradeoffRow& r = rows[i];
         json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
-                            "\"ms_min\": {}, \"ms_max\": {}, \"runs\": {}, "
+                            "\"ms_min\": {}, \"ms_max\": {}, \"runs\": {}, \"floor_ms\": {}, "
                             "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
                             "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
                             "\"over_one_step\": {}}}, \"health\": {{\"nan\": {}, \"inf\": {}, \"negative\": {}, "
                             "\"above_65504\": {}}}}}{}\n",
                             r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
-                            jsonNumber(r.ms), jsonNumber(r.time.min), jsonNumber(r.time.max), r.time.runs,
+                            jsonNumber(r.ms), jsonNumber(r.time.min), jsonNumber(r.time.max), r.time.runs, jsonNumber(r.floorMs),
                             jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
                             jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
                             jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),

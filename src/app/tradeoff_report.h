@@ -17,6 +17,10 @@ struct TradeoffRow {
     TimingSpread time;  // every run: median, fastest, slowest
     double sigma = 0;   // the method's own impulse sigma (achieved, under --match-sigma)
     double megabytes = 0;
+    // The texel-rate floor for the method's taps: taps per pixel times the
+    // hand-written probe's time per tap (Renderer::texelRateMs, same run,
+    // same format and size); 0 when the probe could not run.
+    double floorMs = 0;
     ErrorStats numerical, model;
     Health health;  // of the blurred target: NaN, Inf, negative, above 65504
 };

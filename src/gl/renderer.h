@@ -84,6 +84,12 @@ public:
     // How much of the frame is drawn, 0 to 1, weighted by each pass's measured cost.
     double progress(const SlicedFrame& frame) const;
 
+    // The texel-rate floor (gl/texel_rate.cpp): the median milliseconds of
+    // one hand-written full-screen pass fetching `taps` bilinear texels a
+    // pixel from a width x height texture of `format` into a target of the
+    // same, timed as render() times passes. -1 when the probe cannot run.
+    double texelRateMs(int width, int height, TextureDecl::Format format, int taps, int repeat);
+
     // Called with each pass's index as it starts; while one is set, each
     // pass is finished before the next starts, so the listener knows which
     // pass is drawing (--timeout names it; driver/watchdog.h).

@@ -518,6 +518,7 @@ private:
             }
             drawing_.emplace(s_.renderer->startFrame(*s_.values, s_.time, std::move(only)));
             drawingSince_ = Clock::now();
+            slices_ = 0;  // the slices of this frame only
             s_.drawnWith = s_.values;
             s_.drawnTime = s_.time;
             s_.drawAll = false;

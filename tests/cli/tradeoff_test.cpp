@@ -61,21 +61,30 @@ TEST(CliTradeoff, KeepsTheSpreadOfTheRuns) {
     std::ifstream csv(dir.file("t.csv"));
     std::string header, line;
     std::getline(csv, header);
-    EXPECT_NE(header.find(",above_65504,ms_min,ms_max,runs,target_sigma"), std::string::npos) << header;
+    EXPECT_NE(header.find(",above_65504,ms_min,ms_max,runs,target_sigma,floor_ms"), std::string::npos) << header;
+    EXPECT_NE(r.out.find("texel-rate floor: "), std::string::npos) << r.out;
     int rows = 0;
+    std::vector<double> floorPerTap;
     while (std::getline(csv, line)) {
         ++rows;
         std::vector<std::string> cells;
         std::stringstream ss(line);
         for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-        ASSERT_EQ(cells.size(), 22u) << line;  // target_sigma is empty at natural width
+        ASSERT_EQ(cells.size(), 24u) << line;
         const double ms = std::stod(cells[4]), lo = std::stod(cells[19]), hi = std::stod(cells[20]);
         EXPECT_LE(lo, ms) << line;
         EXPECT_LE(ms, hi) << line;
         EXPECT_GT(lo, 0.0) << line;
         EXPECT_EQ(cells[21], "3") << line;
+        EXPECT_EQ(cells[22], "") << line;  // target_sigma is empty at natural width
+        // The floor: one measured time per tap, times the method's taps.
+        const double floor = std::stod(cells[23]);
+        EXPECT_GT(floor, 0.0) << line;
+        floorPerTap.push_back(floor / std::stod(cells[2]));
     }
     EXPECT_EQ(rows, 2);
+    ASSERT_EQ(floorPerTap.size(), 2u);
+    EXPECT_NEAR(floorPerTap[0], floorPerTap[1], 1e-3 * floorPerTap[0]);
     std::ifstream json(dir.file("t.json"));
     std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
     EXPECT_NE(text.find("\"comparison\": \"natural width\""), std::string::npos) << text;
@@ -101,8 +110,9 @@ TEST(CliTradeoff, MatchSigmaScalesEachFamily) {
         std::vector<std::string> cells;
         std::stringstream ss(line);
         for (std::string c; std::getline(ss, c, ',');) cells.push_back(c);
-        ASSERT_EQ(cells.size(), 23u) << line;
+        ASSERT_EQ(cells.size(), 24u) << line;
         EXPECT_EQ(cells[22], "3") << line;
+        EXPECT_GT(std::stod(cells[23]), 0.0) << line;  // floor_ms
         EXPECT_NEAR(std::stod(cells[6]), 3.0, 0.6) << line;  // the achieved sigma
     }
     EXPECT_EQ(rows, 4);  // superblur, sep9, linear5, dual Kawase
