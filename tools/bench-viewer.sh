@@ -3,11 +3,11 @@
 # bloom (a 23x23 superblur into 512x512, then the composite) at 600x600 in a
 # real window under Xvfb and drags uHalfSize around 11 the way a slider drag
 # does: a new value every 33 ms for 3 s (through stdin `set`, which takes the
-# same path as the panel's slider). Then asks `frames` for the window's frame
-# times during the drag, and again after the drag for how long the final
-# picture took after the last change. Runs twice in the same go: with slices
-# (the default) and with GLIMMER_SLICE_MS=0 (every frame drawn whole, as the
-# viewer did before), so the two are compared on the same machine.
+# same path as the panel's slider). After each drag, `frames` gives the
+# window's frame times during the drag, and after a pause how long the final
+# picture took after the last change. Three drags per run; two runs in the
+# same go: with slices (the default) and with GLIMMER_SLICE_MS=0 (every frame
+# drawn whole, as the viewer did before), compared on the same machine.
 # Usage: tools/bench-viewer.sh [GLIMMER] (default build/src/app/glimmer).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -27,20 +27,41 @@ run() {  # $1: label, $2: GLIMMER_SLICE_MS
   local viewer=$!
   exec 7> "$fifo"
   sleep 4  # loaded, first picture drawn
-  echo frames >&7
-  for i in $(seq 45); do
-    echo "set uHalfSize 10" >&7; sleep 0.033
-    echo "set uHalfSize 11" >&7; sleep 0.033
+  for drag in 1 2 3; do
+    echo frames >&7   # starts the count afresh
+    for i in $(seq 45); do
+      echo "set uHalfSize 10" >&7; sleep 0.033
+      echo "set uHalfSize 11" >&7; sleep 0.033
+    done
+    echo frames >&7   # the frame times during the drag
+    sleep 2
+    echo frames >&7   # the final picture's time after the last change
   done
-  echo frames >&7   # the frame times during the drag
-  sleep 3
-  echo frames >&7   # the final picture's time after the last change
   echo quit >&7
   exec 7>&-
   wait $viewer || true
-  echo "$1 (GLIMMER_SLICE_MS=$2):"
-  sed -n '2p' "$out" | sed 's/^/  during the drag: /'
-  sed -n '3p' "$out" | sed 's/^/  after the drag:  /'
 }
 run sliced ""
 run whole 0
+python3 - "$work/out.sliced" "$work/out.whole" <<'PY'
+import re, statistics, sys
+def read(path):
+    lines = [l for l in open(path) if l.startswith("frames:")]
+    drags = []
+    for k in range(3):
+        during, after = lines[3 * k + 1], lines[3 * k + 2]
+        p95 = float(re.search(r"p95 ([\d.]+) ms", during).group(1))
+        final = float(re.search(r"last picture ([\d.]+) ms after", after).group(1))
+        drawing = float(re.search(r"\(([\d.]+) ms drawing", after).group(1))
+        drags.append((p95, final, drawing))
+        print(f"  drag {k + 1}: p95 frame {p95:6.1f} ms; final picture {final:6.1f} ms after the last change "
+              f"({drawing:.1f} ms drawing)")
+    return [statistics.median(c) for c in zip(*drags)]
+print("with slices (default):")
+s = read(sys.argv[1])
+print("whole frames (GLIMMER_SLICE_MS=0):")
+w = read(sys.argv[2])
+print(f"median p95 frame while dragging: {s[0]:.1f} ms with slices, {w[0]:.1f} ms whole")
+print(f"final picture after the last change: {s[1]:.1f} ms with slices = {s[1] / w[2]:.2f}x one whole frame "
+      f"({w[2]:.1f} ms drawing)")
+PY

@@ -41,6 +41,7 @@ struct SlicedFrame {
     double passMs = 0;       // time spent on that pass so far
     std::vector<PassTiming> timings;  // each finished pass, the sum of its bands
     bool done = false;
+    mutable double progressShown = 0;  // progress() never goes back, though its weights are re-measured
     // The passes still to draw, the one under way included: a newer frame
     // that replaces this one must draw them too.
     std::vector<bool> unfinished() const;
@@ -81,7 +82,8 @@ public:
     // band), each as tall as this pass's measured cost per row allows; true
     // when the frame is finished. A budget of infinity draws it all.
     bool renderSlice(SlicedFrame& frame, double budgetMs);
-    // How much of the frame is drawn, 0 to 1, weighted by each pass's measured cost.
+    // How much of the frame is drawn, 0 to 1, weighted by each pass's
+    // measured cost; never less than it said before for this frame.
     double progress(const SlicedFrame& frame) const;
 
     // The texel-rate floor (gl/texel_rate.cpp): the median milliseconds of

@@ -103,7 +103,8 @@ double Renderer::progress(const SlicedFrame& f) const {
         if (p < f.pass) drawn += cost;
         else if (p == f.pass) drawn += perRow * f.row;
     }
-    return total > 0 ? drawn / total : 1.0;
+    f.progressShown = std::max(f.progressShown, total > 0 ? std::min(drawn / total, 0.999) : 0.999);
+    return f.progressShown;
 }
 
 }  // namespace glimmer
