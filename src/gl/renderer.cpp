@@ -149,12 +149,26 @@ void Renderer::drawPass(const Pass& pass, Target* target, const UniformValues& v
     }
     for (const auto& s : pass.steps) {
         if (s.kind == Step::Kind::Clear) {
+            if (clearIsHidden(pass, s, target)) continue;
             gl_->ClearColor(s.clearColor.r, s.clearColor.g, s.clearColor.b, s.clearColor.a);
             gl_->Clear(GL_COLOR_BUFFER_BIT | (target->depth ? GL_DEPTH_BUFFER_BIT : 0));
         } else {
             drawStep(s.draw, values, time, pass.targets);
         }
     }
+}
+
+bool Renderer::clearIsHidden(const Pass& pass, const Step& clear, const Target* target) const {
+    if (clear.hiddenBy < 0 || size_t(clear.hiddenBy) >= pass.steps.size()) return false;
+    // The viewer's turn and zoom move what is drawn to the screen: the plan's
+    // coverage then no longer holds.
+    if (target == screen_.get() && scene_ != glm::mat4(1.f)) return false;
+    const Draw& d = pass.steps[size_t(clear.hiddenBy)].draw;
+    const MeshBuffers* mesh = d.mesh >= 0 && size_t(d.mesh) < meshes_.size() ? meshes_[size_t(d.mesh)].get() : nullptr;
+    if (!mesh) return false;
+    if (d.program < 0) return true;  // fixed function: the plain transform, every pixel written
+    const Program* prog = programs_[size_t(d.program)].get();
+    return prog && prog->paintsAllItCovers && drawProblem(prog, mesh).empty();
 }
 
 void Renderer::finishPass(const Pass& pass) {

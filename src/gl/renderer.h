@@ -167,6 +167,9 @@ private:
     // the mip chains of the textures it wrote.
     void drawPass(const Pass& pass, Target* target, const UniformValues& values, double time);
     void finishPass(const Pass& pass);
+    // A Clear the plan marked as covered (plan/hidden_clears.h) whose covering
+    // draw will run and paint every pixel it covers: skipping it changes no pixel.
+    bool clearIsHidden(const Pass& pass, const Step& clear, const Target* target) const;
     void drawStep(const Draw& d, const UniformValues& values, double time, const std::vector<int>& targets);
     // Why this mesh cannot be drawn with this program (a patch mesh without
     // tessellation shaders, a primitive the geometry shader does not take);

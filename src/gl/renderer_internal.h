@@ -40,6 +40,10 @@ struct Renderer::Program {
     bool noise2 = false, noise3 = false;  // declares the built-in Noise2 / Noise3
     bool tessellated = false;             // has a tessellation evaluation shader: draws patches only
     GLint geometryInput = 0;              // the geometry shader's input primitive; 0: none
+    // Its draws land where the fixed-function transform puts them and write
+    // every pixel they cover (no discard, no geometry or tessellation stage):
+    // a Clear such a draw covers can be skipped (plan/hidden_clears.h).
+    bool paintsAllItCovers = false;
     std::string name;
 };
 

@@ -1,6 +1,8 @@
 // Renderer::prepare: uploading what the CPU load step read, building
 // programs, making render targets and the screen.
 #include "gl/renderer_internal.h"
+
+#include "shader/coverage_hints.h"
 #include "gl/clear_texture.h"
 
 #include <tuple>
@@ -144,9 +146,16 @@ void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics
         p->timerLocation = gl_->GetUniformLocation(id, "Timer");
         p->usesTangent = gl_->GetAttribLocation(id, "Tangent") == kTangentLocation;
         p->name = decl.name;
-        for (const auto& st : decl.stages) {
+        p->paintsAllItCovers = true;
+        for (size_t k = 0; k < decl.stages.size(); ++k) {
+            const ShaderStage& st = decl.stages[k];
+            const std::string text = k < assets.shaderTexts[i].size() && assets.shaderTexts[i][k] ? *assets.shaderTexts[i][k] : "";
             if (st.kind == ShaderStage::Kind::TessEvaluation) p->tessellated = true;
             if (st.kind == ShaderStage::Kind::Geometry) gl_->GetProgramiv(id, GL_GEOMETRY_INPUT_TYPE, &p->geometryInput);
+            bool vouched = st.kind == ShaderStage::Kind::Vertex     ? keepsPlainTransform(text)
+                           : st.kind == ShaderStage::Kind::Fragment ? !mayDiscard(text)
+                                                                    : false;
+            p->paintsAllItCovers = p->paintsAllItCovers && vouched;
         }
         checkUniformSettings(decl, p->uniforms, file, diags);
         for (const auto& u : p->uniforms) {

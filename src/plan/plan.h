@@ -116,6 +116,10 @@ struct Step {
     Kind kind = Kind::Clear;
     glm::vec4 clearColor{0.f};
     Draw draw;
+    // A Clear: the later step of the same pass whose draw covers the whole
+    // target, so the Clear cannot show if that draw paints every pixel it
+    // covers (plan/hidden_clears.h); -1: none.
+    int hiddenBy = -1;
 };
 
 // Everything drawn between two target changes.

@@ -2,6 +2,7 @@
 // colour, current shaders, texture units) and writing passes of draws.
 #include "plan/builder.h"
 #include "plan/limits.h"
+#include "plan/hidden_clears.h"
 #include "plan/memory_budget.h"
 #include "geometry/planarity.h"
 #include "geometry/shape_registry.h"
@@ -341,6 +342,7 @@ void Builder::finish() {
                 diags_.warning(file(), p.loc, "a pass reads the texture it renders into; the result is undefined");
         }
     }
+    markHiddenClears(plan_);
 
     // Walk back from the screen: a pass is needed when a needed pass after
     // it reads what it writes, or the user asked to see its target.
