@@ -33,6 +33,9 @@
 namespace fs = std::filesystem;
 
 namespace glimmer {
+
+// How long each method (and the floor probe) is drawn before it is timed.
+constexpr auto kWarmUp = std::chrono::milliseconds(200);
 namespace {
 
 
@@ -172,7 +175,15 @@ int runTradeoff(const TradeoffOptions& o) {
             return kExitScriptError;
         }
         UniformValues values(loaded.plan);
-        renderer->render(values, 0);  // warm-up: llvmpipe compiles shaders at first draw
+        // Warm-up: llvmpipe compiles shaders at first draw, and a GPU left idle
+        // while the CPU references ran has lowered its clocks (on the H100 the
+        // same pass measured 5.7x slower right after such a pause). Drawn until
+        // kWarmUp of wall clock have passed, at least once.
+        const auto warmStart = std::chrono::steady_clock::now();
+        do {
+            renderer->render(values, 0);
+            renderer->finish();
+        } while (std::chrono::steady_clock::now() - warmStart < kWarmUp);
         std::vector<double> times;
         for (int r = 0; r < o.repeat; ++r) {
             std::vector<PassTiming> t;
@@ -199,7 +210,7 @@ int runTradeoff(const TradeoffOptions& o) {
     // The floor, measured in this run on this context: a hand-written pass of
     // 9 taps a pixel at the input's size and the targets' format.
     progress.update("tradeoff: the texel-rate floor");
-    const double nineTapMs = renderer->texelRateMs(input.width, input.height, format, 9, std::max(o.repeat, 3));
+    const double nineTapMs = renderer->texelRateMs(input.width, input.height, format, 9, std::max(o.repeat, 3), kWarmUp);
     progress.finish();
     if (nineTapMs > 0) {
         for (auto& r : rows) r.floorMs = nineTapMs / 9.0 * r.method->tapsPerPixel;

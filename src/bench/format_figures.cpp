@@ -77,6 +77,17 @@ int formatFigures(const std::string& backendName) {
         fmt::print("{:<16}{:>16}{:>18.1f}{:>16.2e}{:>16.4f}\n", format, levels.size(), 100.0 * clipped / aboveOne,
                    maxErr, maxValue);
     }
+    // What a blur can cost at best in each format: the texel-rate floor that
+    // `tradeoff` divides by (gl/texel_rate.cpp), per format, same context.
+    fmt::print("\n== texel rate: a hand-written pass of 9 bilinear taps a pixel, 1920x1080, from each format ==\n");
+    fmt::print("{:<16}{:>12}{:>14}\n", "format", "ms", "Gtexel/s");
+    auto probe = Renderer::create([&](const char* n) { return ctx->getProcAddress(n); }, why);
+    for (const char* format : {"RGBA8", "R11F_G11F_B10F", "RGBA16F", "RGBA32F"}) {
+        TextureDecl::Format f;
+        if (!probe || !parseTextureFormat(format, f)) break;
+        const double ms = probe->texelRateMs(1920, 1080, f, 9, 5);
+        fmt::print("{:<16}{:>12.3f}{:>14.2f}\n", format, ms, ms > 0 ? 9.0 * 1920 * 1080 / (ms * 1e6) : 0.0);
+    }
     fs::remove_all(dir);
     return 0;
 }

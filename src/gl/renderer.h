@@ -2,6 +2,7 @@
 // check, view, bench) drives a Renderer; every backend only hands it a
 // function that finds GL entry points. It owns every GL object it makes.
 #pragma once
+#include <chrono>
 #include <functional>
 #include <map>
 #include <memory>
@@ -90,7 +91,9 @@ public:
     // one hand-written full-screen pass fetching `taps` bilinear texels a
     // pixel from a width x height texture of `format` into a target of the
     // same, timed as render() times passes. -1 when the probe cannot run.
-    double texelRateMs(int width, int height, TextureDecl::Format format, int taps, int repeat);
+    // It is drawn for `warmUp` of wall clock first (a GPU raises its clocks).
+    double texelRateMs(int width, int height, TextureDecl::Format format, int taps, int repeat,
+                       std::chrono::milliseconds warmUp = std::chrono::milliseconds(200));
 
     // Called with each pass's index as it starts; while one is set, each
     // pass is finished before the next starts, so the listener knows which

@@ -302,8 +302,19 @@ void Renderer::makeScreen(const Plan& plan, Diagnostics& diags) {
     if (screenDepth) screen_->depth = attachDepth(plan.width, plan.height);
     if (gl_->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
         diags.error(file, {}, fmt::format("the driver cannot make a {}x{} screen", plan.width, plan.height));
-    gl_->ClearColor(0, 0, 0, 1);
-    gl_->Clear(GL_COLOR_BUFFER_BIT);
+    // Black, so a script that never clears the screen reads back defined
+    // pixels; not when its first screen pass starts with a Clear of its own
+    // (the seed bloom: at 512x512 on llvmpipe the clear was a sixth of the set-up).
+    bool firstScreenPassClears = false;
+    for (const auto& pass : plan.passes) {
+        if (!pass.targets.empty() || !pass.needed) continue;
+        firstScreenPassClears = !pass.steps.empty() && pass.steps.front().kind == Step::Kind::Clear;
+        break;
+    }
+    if (!firstScreenPassClears) {
+        gl_->ClearColor(0, 0, 0, 1);
+        gl_->Clear(GL_COLOR_BUFFER_BIT);
+    }
     gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
     gl_->BindTexture(GL_TEXTURE_2D, 0);
 }

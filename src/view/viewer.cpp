@@ -125,6 +125,7 @@ public:
         bool first = !s_.good;
         s_.good = std::move(next);
         drawing_.reset();  // its passes belong to the old plan
+        firstFrame_ = true;
         s_.drawing = -1;
         s_.renderer = std::move(renderer);
         s_.values = values;
@@ -495,6 +496,14 @@ private:
     // for a quarter second, longer ones, so the final picture comes sooner
     // (fewer bands and window frames between them).
     void renderScene() {
+        // A script's first picture is drawn whole: until it is, its targets
+        // and screen hold nothing to show, and the last picture is gone
+        // with the old renderer (a reload is one pause, not a drag).
+        if (firstFrame_) {
+            renderScene(std::numeric_limits<double>::infinity());
+            firstFrame_ = drawing_.has_value();
+            return;
+        }
         bool active = Clock::now() - lastInput_ < std::chrono::milliseconds(120);
         renderScene(active ? sliceMs_ : sliceMs_ * kIdleSliceFactor);
     }
@@ -695,6 +704,7 @@ private:
     // The frame being drawn a slice at a time (none when the picture is done).
     std::optional<SlicedFrame> drawing_;
     const double sliceMs_ = sliceBudgetMs();
+    bool firstFrame_ = true;  // the next frame is a new renderer's first: drawn whole
     Clock::time_point drawingSince_{}, lastUiFrame_{}, lastInput_{};
     int slices_ = 0, lastPictureSlices_ = 0;
     double lastPictureMs_ = 0;
