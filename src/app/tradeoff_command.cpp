@@ -34,8 +34,11 @@ namespace fs = std::filesystem;
 
 namespace glimmer {
 
-// How long each method (and the floor probe) is drawn before it is timed.
-constexpr auto kWarmUp = std::chrono::milliseconds(200);
+// How long each method (and the floor probe) is drawn before it is timed. A
+// GPU lowers its clocks while the CPU references run (the lent H100 idles at
+// 345 MHz of 1980: the same pass then takes 5.7 times as long) and needs
+// sustained work to raise them again; a CPU renderer only compiles at first draw.
+constexpr auto kWarmUpGpu = std::chrono::milliseconds(1000), kWarmUpCpu = std::chrono::milliseconds(200);
 namespace {
 
 
@@ -155,6 +158,7 @@ int runTradeoff(const TradeoffOptions& o) {
         if (keep) methods.push_back(m);
     }
     std::vector<TradeoffRow> rows;
+    const auto warmUp = renderer->gpuTimers() ? kWarmUpGpu : kWarmUpCpu;
     Progress progress;
     for (size_t i = 0; i < methods.size(); ++i) {
         const BlurMethod& m = methods[i];
@@ -176,14 +180,13 @@ int runTradeoff(const TradeoffOptions& o) {
         }
         UniformValues values(loaded.plan);
         // Warm-up: llvmpipe compiles shaders at first draw, and a GPU left idle
-        // while the CPU references ran has lowered its clocks (on the H100 the
-        // same pass measured 5.7x slower right after such a pause). Drawn until
-        // kWarmUp of wall clock have passed, at least once.
+        // while the CPU references ran has lowered its clocks. Drawn until the
+        // warm-up time has passed, at least once.
         const auto warmStart = std::chrono::steady_clock::now();
         do {
             renderer->render(values, 0);
             renderer->finish();
-        } while (std::chrono::steady_clock::now() - warmStart < kWarmUp);
+        } while (std::chrono::steady_clock::now() - warmStart < warmUp);
         std::vector<double> times;
         for (int r = 0; r < o.repeat; ++r) {
             std::vector<PassTiming> t;
@@ -210,11 +213,11 @@ int runTradeoff(const TradeoffOptions& o) {
     // The floor, measured in this run on this context: a hand-written pass of
     // 9 taps a pixel at the input's size and the targets' format.
     progress.update("tradeoff: the texel-rate floor");
-    const double nineTapMs = renderer->texelRateMs(input.width, input.height, format, 9, std::max(o.repeat, 3), kWarmUp);
+    const double nineTapMs = renderer->texelRateMs(input.width, input.height, format, 9, std::max(o.repeat, 7), warmUp);
     progress.finish();
     if (nineTapMs > 0) {
         for (auto& r : rows) r.floorMs = nineTapMs / 9.0 * r.method->tapsPerPixel;
-        fmt::print("texel-rate floor: {:.3f} ms for 9 taps a pixel, {:.2f} Gtexel/s (hand-written pass, this run){}\n",
+        fmt::print("texel-rate floor: {:.3f} ms for 9 taps a pixel, {:.2f} Gtexel/s (hand-written pass, fastest run, this run){}\n",
                    nineTapMs, 9.0 * input.width * input.height / (nineTapMs * 1e6),
                    renderer->gpuTimers() ? ""
                                          : "; on a CPU renderer shading, not fetching, sets the pace, so methods "

@@ -16,13 +16,13 @@ std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}
 
 void printTradeoffTable(const std::vector<TradeoffRow>& rows) {
     fmt::print("{:<16}{:>6}{:>9}{:>9}{:>9}{:>9}{:>8}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n",
-               "method", "taps", "ms", "min", "max", "floor", "x floor", "MB moved", "sigma", "num RMSE", "num PSNR",
+               "method", "taps", "ms", "min", "max", "floor", "min/flr", "MB moved", "sigma", "num RMSE", "num PSNR",
                "num max", "num >1st", "mod RMSE", "mod PSNR", "mod max", "mod >1st", "health");
     for (const auto& r : rows)
         fmt::print("{:<16}{:>6}{:>9.2f}{:>9.2f}{:>9.2f}{:>9.2f}{:>8.2f}{:>10.1f}{:>8.2f} | {:>10.2e}{:>9.1f}{:>10.2e}{:>9} | "
                    "{:>10.2e}{:>9.1f}{:>10.2e}{:>9} | {:>6}\n",
                    r.method->name, r.method->tapsPerPixel, r.ms, r.time.min, r.time.max, r.floorMs,
-                   r.floorMs > 0 ? r.ms / r.floorMs : 0.0, r.megabytes, r.sigma,
+                   r.floorMs > 0 ? r.time.min / r.floorMs : 0.0, r.megabytes, r.sigma,
                    r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs, r.numerical.pixelsOverOneStep,
                    r.model.rmse, r.model.psnr, r.model.maxAbs, r.model.pixelsOverOneStep,
                    r.health.healthy() ? "ok" : "BAD");

@@ -18,8 +18,10 @@ struct TradeoffRow {
     double sigma = 0;   // the method's own impulse sigma (achieved, under --match-sigma)
     double megabytes = 0;
     // The texel-rate floor for the method's taps: taps per pixel times the
-    // hand-written probe's time per tap (Renderer::texelRateMs, same run,
-    // same format and size); 0 when the probe could not run.
+    // hand-written probe's time per tap (Renderer::texelRateMs: its fastest
+    // run; same run, format and size); 0 when the probe could not run. The
+    // table's min/flr compares the method's fastest run with it: on a shared
+    // GPU, only the fastest runs are free of other work.
     double floorMs = 0;
     ErrorStats numerical, model;
     Health health;  // of the blurred target: NaN, Inf, negative, above 65504

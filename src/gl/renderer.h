@@ -87,8 +87,8 @@ public:
     // measured cost; never less than it said before for this frame.
     double progress(const SlicedFrame& frame) const;
 
-    // The texel-rate floor (gl/texel_rate.cpp): the median milliseconds of
-    // one hand-written full-screen pass fetching `taps` bilinear texels a
+    // The texel-rate floor (gl/texel_rate.cpp): the fastest of `repeat` runs of
+    // a hand-written full-screen pass fetching `taps` bilinear texels a
     // pixel from a width x height texture of `format` into a target of the
     // same, timed as render() times passes. -1 when the probe cannot run.
     // It is drawn for `warmUp` of wall clock first (a GPU raises its clocks).

@@ -134,8 +134,10 @@ double Renderer::texelRateMs(int width, int height, TextureDecl::Format format, 
     gl.DeleteFramebuffers(1, &fbo);
     gl.DeleteTextures(2, tex);
     gl.DeleteProgram(prog);
-    std::sort(ms.begin(), ms.end());
-    return ms[ms.size() / 2];
+    // The fastest run: other work on a shared GPU (the lent H100 is
+    // time-sliced: the same pass measured 1.0 and 5.7 ms in one run) only
+    // ever adds time, so the fastest is the closest to what the hardware does.
+    return *std::min_element(ms.begin(), ms.end());
 }
 
 }  // namespace glimmer
