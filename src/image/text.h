@@ -1,5 +1,6 @@
-// Text drawn into pixels, with stb_easy_font: the overlay of uniform values
-// that a saved handout keeps, and the labels of contact sheets.
+// Text drawn into pixels with stb_easy_font: the bitmap font that
+// image/ttf_text.h falls back on when no TrueType file is found, and the
+// labels of stand-in textures.
 #pragma once
 #include <array>
 #include <string>
@@ -15,8 +16,7 @@ namespace glimmer {
 void drawText(Image& img, int x, int y, const std::string& text, int scale = 2);
 
 // Where drawText puts the dark box and the white quads of the glyphs, in
-// image pixels (x0, y0, x1, y1; x1 and y1 excluded), so a window can draw
-// the very same overlay as a saved picture (the viewer's "Show values").
+// image pixels (x0, y0, x1, y1; x1 and y1 excluded).
 struct TextLayout {
     std::array<int, 4> box{};
     std::vector<std::array<int, 4>> quads;

@@ -195,4 +195,43 @@ void drawLabelBoxed(Image& img, int x, int y, const std::string& text, float px,
     for (const auto& l : lines(text)) drawLabel(img, x + margin, y + margin + line++ * labelLineHeight(px), l, px);
 }
 
+// The layer from two drawings of the box, over black and over white: over
+// black a pixel is a C, over white a C + (1 - a) 255, so their difference
+// gives a and then C (no second blending rule to keep in step with drawLabelBoxed).
+Image labelLayer(const std::string& text, float px) {
+    int w = 0, h = 0;
+    measureLabelBoxed(text, px, w, h);
+    if (w <= 0 || h <= 0) return {};
+    Image black = Image::rgba8(w, h), white = Image::rgba8(w, h);
+    for (size_t i = 0; i < white.u8.size(); ++i) white.u8[i] = 255, black.u8[i] = (i % 4 == 3) ? 255 : 0;
+    drawLabelBoxed(black, 0, 0, text, px);
+    drawLabelBoxed(white, 0, 0, text, px);
+    Image layer = Image::rgba8(w, h);
+    for (size_t p = 0; p < size_t(w) * size_t(h); ++p) {
+        int spread = 0;
+        for (size_t c = 0; c < 3; ++c) spread = std::max(spread, int(white.u8[p * 4 + c]) - int(black.u8[p * 4 + c]));
+        const double a = 1.0 - spread / 255.0;
+        layer.u8[p * 4 + 3] = std::uint8_t(std::lround(a * 255.0));
+        for (size_t c = 0; c < 3; ++c)
+            layer.u8[p * 4 + c] = a > 0 ? std::uint8_t(std::min(255.0, std::round(black.u8[p * 4 + c] / a))) : 0;
+    }
+    return layer;
+}
+
+void layOver(Image& img, const Image& layer, int x, int y) {
+    if (img.type != Image::Type::U8 || layer.type != Image::Type::U8) return;
+    for (int ly = 0; ly < layer.height; ++ly) {
+        const int iy = y + ly;
+        if (iy < 0 || iy >= img.height) continue;
+        for (int lx = 0; lx < layer.width; ++lx) {
+            const int ix = x + lx;
+            if (ix < 0 || ix >= img.width) continue;
+            const std::uint8_t* l = &layer.u8[(size_t(ly) * size_t(layer.width) + size_t(lx)) * 4];
+            std::uint8_t* p = &img.u8[(size_t(iy) * size_t(img.width) + size_t(ix)) * 4];
+            const double a = l[3] / 255.0;
+            for (int c = 0; c < 3; ++c) p[c] = std::uint8_t(std::lround(a * l[c] + (1.0 - a) * p[c]));
+        }
+    }
+}
+
 }  // namespace glimmer

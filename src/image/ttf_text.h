@@ -33,4 +33,14 @@ void drawLabel(Image& img, int x, int y, const std::string& text, float px, Text
 void drawLabelBoxed(Image& img, int x, int y, const std::string& text, float px, int* w = nullptr, int* h = nullptr);
 void measureLabelBoxed(const std::string& text, float px, int& w, int& h);
 
+// drawLabelBoxed as a layer of its own: an RGBA8 image (straight alpha) the
+// size of the box which, laid over any picture with layOver (or a GPU's
+// SRC_ALPHA, ONE_MINUS_SRC_ALPHA blending), gives what drawLabelBoxed draws
+// there, within two 8-bit steps (its colour and alpha are each rounded to
+// 8 bits). The viewer shows its "Show values" overlay
+// with it, so the window and a saved PNG carry the same text in the same place.
+Image labelLayer(const std::string& text, float px);
+// Lays `layer` over `img` with its top left at x, y: out = a C + (1 - a) P.
+void layOver(Image& img, const Image& layer, int x, int y);
+
 }  // namespace glimmer

@@ -21,8 +21,9 @@
 
 #include "driver/options.h"
 #include "driver/prepare_script.h"
+#include "gl/ui_texture.h"
 #include "gl/window_frame.h"
-#include "image/text.h"
+#include "image/ttf_text.h"
 #include "plan/dependencies.h"
 #include "view/view_model.h"
 #include "view/wakeups.h"
@@ -41,6 +42,7 @@ constexpr double kSliceMs = 18;
 // other without a window frame in between, except to show progress this often.
 constexpr auto kProgressEvery = std::chrono::milliseconds(100);
 constexpr double kIdleSliceFactor = 3;
+constexpr int kOverlayAt = 8;  // the "Show values" box's top left, in the picture and in the window
 
 // The slice budget: kSliceMs, or $GLIMMER_SLICE_MS for benchmarks
 // (tools/bench-viewer.sh), where 0 draws every frame whole, as before slices.
@@ -160,6 +162,8 @@ public:
         if (options_.uiScale <= 0) glfwGetWindowContentScale(w, &sx, &sy);
         float scale = chooseUiScale(options_.uiScale, sx, sy);
         setUpFonts(scale);
+        overlayPx_ = 15.f * scale;  // legible from the back of a room at --ui-scale 2
+        overlayTexture_ = UiTexture::create([&](const char* n) { return window_.getProcAddress(n); }, why);
         std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
         gWindowAlive = true;
         FileWaker waker(watch_.notifyFd());
@@ -238,6 +242,7 @@ public:
         }
         gWindowAlive = false;
         s_.renderer.reset();
+        overlayTexture_.reset();  // while the context is still current
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
@@ -349,18 +354,34 @@ private:
     }
 
     // "Show values": one line per control, over a dark box, at the
-    // picture's top left: the same box and glyphs (stb_easy_font, drawText's
-    // layout) as the saved PNG has, pixel for pixel.
+    // picture's top left, in DejaVu: the same layer a saved PNG gets.
     void overlay() {
         if (!s_.showValues) return;
+        const Image& layer = overlayLayer();
+        if (layer.empty() || !overlayTexture_) return;
+        if (overlayUploaded_ != overlayMadeFor_) {
+            overlayId_ = overlayTexture_->upload(layer);
+            overlayUploaded_ = overlayMadeFor_;
+        }
+        if (!overlayId_) return;
+        // The picture's top left is the window's: the same offset as in a saved PNG.
+        ImGui::GetForegroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(overlayId_)),
+                                                 ImVec2(kOverlayAt, kOverlayAt),
+                                                 ImVec2(float(kOverlayAt + layer.width), float(kOverlayAt + layer.height)));
+    }
+
+    // The "Show values" overlay as a layer (image/ttf_text.h labelLayer):
+    // DejaVu at the panel's scale, remade only when its text changes. The
+    // window draws it over the picture and a save lays it over the PNG, so
+    // both carry the same pixels in the same place.
+    const Image& overlayLayer() {
         std::string text = overlayText(s_);
-        if (text.empty()) return;
-        ImDrawList* dl = ImGui::GetForegroundDrawList();
-        TextLayout l = layoutText(8, 8, text);
-        auto v = [](int x, int y) { return ImVec2(float(x), float(y)); };
-        // drawText darkens the box to a third of the picture: black at 2/3 alpha.
-        dl->AddRectFilled(v(l.box[0], l.box[1]), v(l.box[2], l.box[3]), IM_COL32(0, 0, 0, 170));
-        for (const auto& q : l.quads) dl->AddRectFilled(v(q[0], q[1]), v(q[2], q[3]), IM_COL32(255, 255, 255, 255));
+        std::string key = fmt::format("{}|{}", overlayPx_, text);
+        if (key != overlayMadeFor_) {
+            overlay_ = text.empty() ? Image{} : labelLayer(text, overlayPx_);
+            overlayMadeFor_ = key;
+        }
+        return overlay_;
     }
 
     void watchFilesOf(const Plan& plan) {
@@ -659,7 +680,7 @@ private:
             img = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTexture(s_.shownTexture);
         }
         if (img.empty()) return;
-        if (s_.showValues) drawText(img, 8, 8, overlayText(s_));
+        if (s_.showValues) layOver(img, overlayLayer(), kOverlayAt, kOverlayAt);
         std::string why;
         if (writePng(file, img, why)) s_.status = "saved " + file;
         else s_.status = why;
@@ -701,6 +722,11 @@ private:
     int probeTexture_ = -2;
     Image probeImage_;
     std::unique_ptr<WindowFrame> frame_;  // clears the window; the viewer itself calls no GL
+    std::unique_ptr<UiTexture> overlayTexture_;  // the overlay layer, for ImGui to draw
+    Image overlay_;
+    std::string overlayMadeFor_, overlayUploaded_;
+    unsigned overlayId_ = 0;
+    float overlayPx_ = 15.f;
     // The frame being drawn a slice at a time (none when the picture is done).
     std::optional<SlicedFrame> drawing_;
     const double sliceMs_ = sliceBudgetMs();

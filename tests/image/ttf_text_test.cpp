@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "image/ttf_text.h"
+#include "util/pcg32.h"
 
 using namespace glimmer;
 
@@ -42,6 +43,37 @@ TEST(TtfText, GlyphsStayInsideTheirBox) {
     EXPECT_GT(inside, 60);
     EXPECT_GT(full, 10);             // solid stems
     EXPECT_GT(inside - full, 10);    // and anti-aliased edges: a real outline font
+}
+
+// The viewer's overlay is a layer laid over the picture (by layOver in a
+// saved PNG, by the GPU's blending in the window): over any picture it must
+// give what drawLabelBoxed draws there, within two 8-bit steps (the layer's
+// colour and alpha are each rounded to 8 bits, then the blend is).
+TEST(TtfText, ALabelLayerOverAnyPictureIsTheBoxedLabel) {
+    const std::string text = "uAdd = 2.5\nuHalfSize = 11";
+    const float px = 15;
+    const Image layer = labelLayer(text, px);
+    int w = 0, h = 0;
+    measureLabelBoxed(text, px, w, h);
+    ASSERT_EQ(layer.width, w);
+    ASSERT_EQ(layer.height, h);
+    Pcg32 rng(3);
+    Image picture = Image::rgba8(w + 20, h + 20);
+    for (size_t i = 0; i < picture.u8.size(); ++i) picture.u8[i] = i % 4 == 3 ? 255 : std::uint8_t(rng.next() & 255);
+    Image drawn = picture, laid = picture;
+    drawLabelBoxed(drawn, 5, 7, text, px);
+    layOver(laid, layer, 5, 7);
+    int worst = 0;
+    long glyphPixels = 0;
+    for (size_t i = 0; i < drawn.u8.size(); ++i) {
+        if (i % 4 == 3) continue;
+        worst = std::max(worst, std::abs(int(drawn.u8[i]) - int(laid.u8[i])));
+        glyphPixels += drawn.u8[i] == 255 && picture.u8[i] != 255;
+    }
+    EXPECT_LE(worst, 2);
+    EXPECT_GT(glyphPixels, 50);  // the text is there, not only the box
+    // The box darkens to a third (alpha 2/3), the stems are opaque white.
+    EXPECT_EQ(layer.u8[3], 170);
 }
 
 }  // namespace
