@@ -182,16 +182,6 @@ glimmer::Image load(const fs::path& p) {
     return img;
 }
 
-std::string sh(const std::string& cmd) {
-    std::string out;
-    if (FILE* f = ::popen(cmd.c_str(), "r")) {
-        char buf[4096];
-        for (size_t n; (n = fread(buf, 1, sizeof buf, f)) > 0;) out.append(buf, n);
-        ::pclose(f);
-    }
-    return out;
-}
-
 // Saves under `name`, waits for the file, returns its bytes.
 std::vector<unsigned char> saved(ViewerProcess& v, const fs::path& dir, const std::string& name) {
     v.send("save " + name);
@@ -227,7 +217,7 @@ TEST(ViewerControls, ClickingAnErrorCopiesItsFileAndLine) {
     // What another program pastes (Tk reads the CLIPBOARD selection, which
     // the viewer owns and answers while it waits for events).
     if (std::system("python3 -c 'import tkinter' 2>/dev/null") != 0) GTEST_SKIP() << "no python3-tk to read the clipboard";
-    std::string clip = sh(x->env +
+    std::string clip = shellOutput(x->env +
                           " timeout 10 python3 -c 'import tkinter; r = tkinter.Tk(); r.withdraw(); "
                           "print(r.clipboard_get(), end=\"\")' 2>&1");
     EXPECT_EQ(clip, where);

@@ -10,11 +10,7 @@
 
 namespace glimmer_viewer {
 
-namespace fs = std::filesystem;
-
-namespace {
-
-std::string run(const std::string& cmd) {
+std::string shellOutput(const std::string& cmd) {
     std::string out;
     if (FILE* f = ::popen(cmd.c_str(), "r")) {
         char buf[4096];
@@ -23,6 +19,10 @@ std::string run(const std::string& cmd) {
     }
     return out;
 }
+
+namespace fs = std::filesystem;
+
+namespace {
 
 std::string envOf(int pid, const std::string& name) {
     std::ifstream f("/proc/" + std::to_string(pid) + "/environ", std::ios::binary);
@@ -52,7 +52,7 @@ std::optional<XViewer> findViewer(const fs::path& workDir, std::chrono::seconds 
             XViewer v;
             v.pid = std::stoi(name);
             v.env = "DISPLAY=" + envOf(v.pid, "DISPLAY") + " XAUTHORITY=" + envOf(v.pid, "XAUTHORITY");
-            std::string id = run(v.env + " xdotool search --name '^Glimmer - ' 2>/dev/null");
+            std::string id = shellOutput(v.env + " xdotool search --name '^Glimmer - ' 2>/dev/null");
             if (id.empty()) continue;
             v.window = id.substr(0, id.find('\n'));
             return v;
@@ -62,7 +62,7 @@ std::optional<XViewer> findViewer(const fs::path& workDir, std::chrono::seconds 
     return std::nullopt;
 }
 
-std::string xdotool(const XViewer& v, const std::string& args) { return run(v.env + " xdotool " + args + " 2>&1"); }
+std::string xdotool(const XViewer& v, const std::string& args) { return shellOutput(v.env + " xdotool " + args + " 2>&1"); }
 
 bool windowSize(const XViewer& v, int& w, int& h) {
     std::string g = xdotool(v, "getwindowgeometry " + v.window);
@@ -72,7 +72,7 @@ bool windowSize(const XViewer& v, int& w, int& h) {
 
 glimmer::Image captureWindow(const XViewer& v, const fs::path& scratch) {
     fs::path png = scratch / "capture.png";
-    run(v.env + " /usr/bin/import -window " + v.window + " " + png.string() + " 2>&1");
+    shellOutput(v.env + " /usr/bin/import -window " + v.window + " " + png.string() + " 2>&1");
     glimmer::Image img;
     std::string why;
     glimmer::loadImage(png.string(), img, why);

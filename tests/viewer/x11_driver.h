@@ -21,6 +21,8 @@ struct XViewer {
 // The glimmer process whose working folder is `workDir`, once its window is up.
 std::optional<XViewer> findViewer(const std::filesystem::path& workDir,
                                   std::chrono::seconds timeout = std::chrono::seconds(30));
+// Runs a shell command; its standard output.
+std::string shellOutput(const std::string& cmd);
 // Runs `xdotool ARGS` on the viewer's display; its standard output.
 std::string xdotool(const XViewer& v, const std::string& args);
 // The window's size, from xdotool getwindowgeometry.
