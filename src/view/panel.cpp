@@ -183,6 +183,12 @@ void setUpFonts(float scale) {
         return {};
     };
     std::string sans = find("DejaVuSans.ttf"), mono = find("DejaVuSansMono.ttf");
+    // Called again when the scale changes (a `scale` command, a move to a
+    // monitor of another content scale): fonts made afresh, sizes scaled from
+    // ImGui's own, never from an already scaled style.
+    io.Fonts->Clear();
+    static const ImGuiStyle unscaled = ImGui::GetStyle();
+    ImGui::GetStyle() = unscaled;
     float px = std::round(15.f * scale);
     ImFontConfig cfg;
     cfg.OversampleH = 2;  // rasterised at the size it is shown: crisp, not a blown-up bitmap

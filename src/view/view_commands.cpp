@@ -107,6 +107,13 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
                 error = "split: '" + args[size_t(i)] + "' is not a texture unit (0 to 31) or 'screen'";
                 return std::nullopt;
             }
+    } else if (word == "scale") {
+        if (!want(1, "scale 0.5..4")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Scale;
+        if (!toNumber(args[0], c.value) || !(c.value >= 0.5 && c.value <= 4)) {
+            error = "scale: '" + args[0] + "' is not a number from 0.5 to 4";
+            return std::nullopt;
+        }
     } else if (word == "help") {
         if (!want(0, "help")) return std::nullopt;
         c.kind = ViewCommand::Kind::Help;
@@ -117,7 +124,7 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         if (!want(0, "quit")) return std::nullopt;
         c.kind = ViewCommand::Kind::Quit;
     } else {
-        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, help, frames, quit)";
+        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, scale, help, frames, quit)";
         return std::nullopt;
     }
     return c;

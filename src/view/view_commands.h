@@ -8,10 +8,10 @@
 namespace glimmer {
 
 struct ViewCommand {
-    enum class Kind { Set, Reload, Save, Show, Values, Probe, Split, Help, Frames, Quit };
+    enum class Kind { Set, Reload, Save, Show, Values, Probe, Split, Scale, Help, Frames, Quit };
     Kind kind = Kind::Quit;
     std::string name;   // Set: the uniform; Save: the file
-    double value = 0;   // Set: the first number
+    double value = 0;   // Set: the first number; Scale: the scale
     std::string text;   // Set: the value as written: a number, true/false, or "r,g,b[,a]" / a vector
     int unit = -1;      // Show, Split's left side: texture unit, -1 for the screen
     int right = -1;     // Split's right side: texture unit, -1 for the screen

@@ -115,6 +115,7 @@ std::string helpText() {
            "  values on|off      the \"Show values\" overlay (also burned into saves)\n"
            "  probe on|off       the pixel probe; \"probe\" alone prints what it reads under the pointer\n"
            "  split L R | off    before/after split: unit L (or screen) left, R right of the divider\n"
+           "  scale S            the panel's text and controls at S (0.5 to 4), as --ui-scale\n"
            "  help               print this list\n"
            "  frames             print frame times since the last 'frames' and the last picture's time\n"
            "  quit               close the window\n"

@@ -160,11 +160,8 @@ public:
         ImGui_ImplOpenGL3_Init("#version 130");
         float sx = 1, sy = 1;
         if (options_.uiScale <= 0) glfwGetWindowContentScale(w, &sx, &sy);
-        float scale = chooseUiScale(options_.uiScale, sx, sy);
-        setUpFonts(scale);
-        overlayPx_ = 15.f * scale;  // legible from the back of a room at --ui-scale 2
         overlayTexture_ = UiTexture::create([&](const char* n) { return window_.getProcAddress(n); }, why);
-        std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
+        applyUiScale(chooseUiScale(options_.uiScale, sx, sy), false);
         gWindowAlive = true;
         FileWaker waker(watch_.notifyFd());
 
@@ -193,6 +190,7 @@ public:
             if (s_.playing) s_.time += std::chrono::duration<double>(now - lastTick).count();
             lastTick = now;
 
+            followContentScale();
             draw |= followWindowSize(now);
             auto changed = watch_.poll(now);
             if (!changed.empty()) {
@@ -585,6 +583,29 @@ private:
         }
     }
 
+    // The panel's text and controls at `scale`, and the overlay with them.
+    // Between frames only: ImGui's OpenGL backend remakes its font texture.
+    void applyUiScale(float scale, bool remakeTexture = true) {
+        setUpFonts(scale);
+        if (remakeTexture) {
+            ImGui_ImplOpenGL3_DestroyFontsTexture();
+            ImGui_ImplOpenGL3_CreateFontsTexture();
+        }
+        uiScale_ = scale;
+        overlayPx_ = 15.f * scale;  // legible from the back of a room at --ui-scale 2
+        std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
+    }
+
+    // Follows the monitor's content scale when no --ui-scale was given (GLFW
+    // reports a change when the window moves to another monitor).
+    void followContentScale() {
+        if (!gContentScaleChanged.exchange(false) || options_.uiScale > 0) return;
+        float sx = 1, sy = 1;
+        glfwGetWindowContentScale(window_.handle(), &sx, &sy);
+        const float scale = chooseUiScale(0, sx, sy);
+        if (scale != uiScale_) applyUiScale(scale);
+    }
+
     // The time since the last window frame, while the window is busy (a
     // pause of a second or more is idle time, not a slow frame).
     void noteFrame() {
@@ -625,6 +646,7 @@ private:
         case ViewCommand::Kind::Quit: return true;
         case ViewCommand::Kind::Help: std::cerr << helpText(); break;
         case ViewCommand::Kind::Frames: printFrameStats(); break;
+        case ViewCommand::Kind::Scale: applyUiScale(float(c.value)); break;
         case ViewCommand::Kind::Reload: load("reloaded"); break;
         case ViewCommand::Kind::Set: {
             if (!s_.good) break;
@@ -727,6 +749,7 @@ private:
     std::string overlayMadeFor_, overlayUploaded_;
     unsigned overlayId_ = 0;
     float overlayPx_ = 15.f;
+    float uiScale_ = 1.f;
     // The frame being drawn a slice at a time (none when the picture is done).
     std::optional<SlicedFrame> drawing_;
     const double sliceMs_ = sliceBudgetMs();

@@ -12,6 +12,7 @@ namespace glimmer {
 
 std::atomic<bool> gInput{false};
 std::atomic<bool> gWindowAlive{false};
+std::atomic<bool> gContentScaleChanged{false};
 std::vector<int> gKeyPresses;
 
 void wake() {
@@ -35,6 +36,10 @@ void installWakeCallbacks(GLFWwindow* w) {
     glfwSetCursorEnterCallback(w, [](GLFWwindow* win, int) { markInput(win); });
     glfwSetWindowFocusCallback(w, [](GLFWwindow* win, int) { markInput(win); });
     glfwSetFramebufferSizeCallback(w, [](GLFWwindow* win, int, int) { markInput(win); });
+    glfwSetWindowContentScaleCallback(w, [](GLFWwindow* win, float, float) {
+        gContentScaleChanged = true;
+        markInput(win);
+    });
 }
 
 void CommandQueue::push(std::string line) {

@@ -18,6 +18,8 @@ namespace glimmer {
 extern std::atomic<bool> gInput;
 // Cleared before GLFW shuts down, so a thread that wakes the loop stops doing so.
 extern std::atomic<bool> gWindowAlive;
+// Set by GLFW when the window's content scale changes (another monitor).
+extern std::atomic<bool> gContentScaleChanged;
 // Keys pressed since the last frame, in order. ImGui 1.86 (Debian's) keeps
 // only whether a key is down at the frame: a press and its release handled in
 // one batch of events (a quick tap while a frame renders, xdotool's `key`)

@@ -117,7 +117,7 @@ TEST(ViewCommands, ParsesEveryCommand) {
 TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     std::string err;
     EXPECT_FALSE(parseViewCommand("jump", err));
-    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, values, probe, split, help, frames, quit)");
+    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, values, probe, split, scale, help, frames, quit)");
     EXPECT_FALSE(parseViewCommand("set uAdd", err));
     EXPECT_EQ(err, "usage: set NAME VALUE");
     EXPECT_FALSE(parseViewCommand("set uAdd lots", err));
@@ -130,6 +130,14 @@ TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     EXPECT_EQ(err, "usage: values on|off");
     EXPECT_FALSE(parseViewCommand("probe 3", err));
     EXPECT_EQ(err, "usage: probe [on|off]");
+    EXPECT_FALSE(parseViewCommand("scale 9", err));
+    EXPECT_EQ(err, "scale: '9' is not a number from 0.5 to 4");
+    EXPECT_FALSE(parseViewCommand("scale", err));
+    EXPECT_EQ(err, "usage: scale 0.5..4");
+    auto scale = parseViewCommand("scale 1.5", err);
+    ASSERT_TRUE(scale) << err;
+    EXPECT_EQ(scale->kind, ViewCommand::Kind::Scale);
+    EXPECT_EQ(scale->value, 1.5);
     EXPECT_FALSE(parseViewCommand("split 6", err));
     EXPECT_EQ(err, "usage: split LEFT_UNIT|screen RIGHT_UNIT|screen, or split off");
     EXPECT_FALSE(parseViewCommand("split 6 99", err));

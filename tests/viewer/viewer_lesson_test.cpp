@@ -217,8 +217,7 @@ TEST(ViewerLesson, UiScaleTwoUsesTheTtfAtTwiceTheSize) {
         EXPECT_NE(v.log().find("DejaVuSans.ttf at " + std::to_string(15 * scale) + " px"), std::string::npos) << v.log();
         auto x = findViewer(p.dir);
         ASSERT_TRUE(x) << v.log();
-    std::this_thread::sleep_for(1s);  // the window grows to hold the panel
-        std::this_thread::sleep_for(1s);
+        std::this_thread::sleep_for(2s);  // the window grows to hold the panel
         int h = 0;
         ASSERT_TRUE(windowSize(*x, widths[scale - 1], h));
         EXPECT_EQ(v.quit(), 0) << v.log();
@@ -227,6 +226,33 @@ TEST(ViewerLesson, UiScaleTwoUsesTheTtfAtTwiceTheSize) {
     EXPECT_GT(panel2, panel1 * 17 / 10) << panel1 << " " << panel2;
     EXPECT_LT(panel2, panel1 * 23 / 10) << panel1 << " " << panel2;
     EXPECT_EQ(glimmer("view " + (p.dir / "bloom.glib").string() + " --ui-scale 9 --no-stdin"), 2);
+}
+
+// The same change while the window is open (the `scale` command, and the
+// path a move to a monitor of another content scale takes): fonts remade,
+// the panel twice as wide, the picture untouched.
+TEST(ViewerLesson, ScaleCommandRescalesThePanelLive) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "256x256", "--ui-scale", "1"}, p.dir);
+    ASSERT_TRUE(v.waitForLog("glimmer view: ui scale 1")) << v.log();
+    auto x = findViewer(p.dir);
+    ASSERT_TRUE(x) << v.log();
+    std::this_thread::sleep_for(2s);  // the window grows to hold the panel
+    int w1 = 0, w2 = 0, h = 0;
+    ASSERT_TRUE(windowSize(*x, w1, h));
+    v.send("scale 2");
+    ASSERT_TRUE(v.waitForLog("glimmer view: ui scale 2")) << v.log();
+    EXPECT_NE(v.log().find("DejaVuSans.ttf at 30 px"), std::string::npos) << v.log();
+    std::this_thread::sleep_for(2s);
+    ASSERT_TRUE(windowSize(*x, w2, h));
+    const int panel1 = w1 - 256, panel2 = w2 - 256;
+    EXPECT_GT(panel2, panel1 * 17 / 10) << panel1 << " " << panel2;
+    EXPECT_LT(panel2, panel1 * 23 / 10) << panel1 << " " << panel2;
+    v.send("save after.png");
+    ASSERT_TRUE(waitForFile(p.dir / "after.png")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    ASSERT_EQ(glimmer("render " + (p.dir / "bloom.glib").string() + " --size 256x256 -o " + (p.dir / "r.png").string()), 0);
+    EXPECT_EQ(readBytes(p.dir / "after.png"), readBytes(p.dir / "r.png"));
 }
 
 TEST(ViewerLesson, HelpListsEveryCommand) {
