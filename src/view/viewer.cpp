@@ -41,7 +41,7 @@ constexpr double kSliceMs = 18;
 // While a frame draws and nothing asks for the window, slices follow each
 // other without a window frame in between, except to show progress this often.
 constexpr auto kProgressEvery = std::chrono::milliseconds(100);
-constexpr double kIdleSliceFactor = 3;
+constexpr double kIdleSliceFactor = 5;
 constexpr int kOverlayAt = 8;  // the "Show values" box's top left, in the picture and in the window
 
 // The slice budget: kSliceMs, or $GLIMMER_SLICE_MS for benchmarks
