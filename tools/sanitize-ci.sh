@@ -1,17 +1,35 @@
 #!/usr/bin/env bash
-# Builds the test programs that need no GL context with AddressSanitizer and
-# UndefinedBehaviorSanitizer (-DGLIMMER_SANITIZE=ON) and runs them. The GL
-# test programs are left to the normal build: under ASan, llvmpipe makes
-# them too slow for CI's budget (docs/RELIABILITY.md). Leaks are reported,
-# Mesa's suppressed by tools/lsan.supp.
+# Builds test programs with AddressSanitizer and UndefinedBehaviorSanitizer
+# (-DGLIMMER_SANITIZE=ON) and runs them: every program that needs no GL
+# context, and the two that run the renderer in-process on Mesa's llvmpipe
+# (test_render, test_glman), on the OSMesa backend only. Leaks are reported,
+# Mesa's suppressed by tools/lsan.supp. Measured on 2 shared cores: the GL
+# programs take about 26 s together under ASan (docs/RELIABILITY.md).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLIMMER_SANITIZE=ON >/dev/null
 tests=(test_lang test_image test_geometry test_plan test_shaderlog test_reference)
-cmake --build build-asan -j2 --target "${tests[@]}"
+gl_tests=(test_render test_glman)
+cmake --build build-asan -j2 --target "${tests[@]}" "${gl_tests[@]}"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions="$PWD/tools/lsan.supp"
 for t in "${tests[@]}"; do
   echo "sanitize-ci: $t"
   (cd build-asan/tests && ./"$t" --gtest_brief=1)
 done
+# One backend is enough to put Glimmer's renderer under the sanitizers; OSMesa
+# and EGL run the same llvmpipe.
+export GLIMMER_TEST_BACKENDS=osmesa
+# Backends.* is the one case that makes an EGL context whatever the list says.
+# Mesa's EGL leaks 240 bytes inside swrast_dri.so and dlcloses that library at
+# eglTerminate, so when LeakSanitizer reports at exit the frames point into
+# unmapped memory ("<unknown module>" or a bogus test_render+0x... offset) and
+# no module suppression can match them without matching Glimmer's own code.
+# That case runs on its own with leak detection off (ASan and UBSan still on);
+# everything else in test_render runs with leaks reported.
+for t in "${gl_tests[@]}"; do
+  echo "sanitize-ci: $t (osmesa)"
+  (cd build-asan/tests && ./"$t" --gtest_brief=1 --gtest_filter='-Backends.*')
+done
+echo "sanitize-ci: test_render Backends.* (EGL, leak detection off)"
+(cd build-asan/tests && ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 ./test_render --gtest_brief=1 --gtest_filter='Backends.*')
