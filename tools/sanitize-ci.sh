@@ -5,14 +5,14 @@
 # (test_render, test_glman, on the OSMesa backend only), and test_cli, which
 # runs this build's sanitized glimmer program as a child. Leaks are reported,
 # Mesa's suppressed by tools/lsan.supp. Measured on 2 shared cores: the GL
-# programs take about 65 s together under ASan (docs/RELIABILITY.md).
-# test_viewer (a window under a virtual X server) is not run here.
+# programs take about two minutes together under ASan (docs/RELIABILITY.md).
+# test_viewer (the window under xvfb-run) runs with leak detection off.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLIMMER_SANITIZE=ON >/dev/null
 tests=(test_lang test_image test_geometry test_plan test_shaderlog test_reference test_shader test_view)
 gl_tests=(test_render test_glman)
-cmake --build build-asan -j2 --target "${tests[@]}" "${gl_tests[@]}" test_cli
+cmake --build build-asan -j2 --target "${tests[@]}" "${gl_tests[@]}" test_cli test_viewer
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 export LSAN_OPTIONS=suppressions="$PWD/tools/lsan.supp"
 for t in "${tests[@]}"; do
@@ -51,3 +51,11 @@ fi
 # fails the test that ran it.
 echo "sanitize-ci: test_cli (children on their default backend)"
 (cd build-asan/tests && LSAN_OPTIONS="$LSAN_OPTIONS:print_suppressions=0" ./test_cli --gtest_brief=1)
+# test_viewer runs the sanitized glimmer's window under xvfb-run. At exit,
+# GLFW's glfwTerminate dlcloses libGL, which unloads Mesa's libglapi.so.0
+# (255 strdup'd names, 5323 bytes) and swrast_dri.so (the 240 bytes above);
+# LeakSanitizer then reports them from "<unknown module>", the viewer exits 1
+# and the case fails. Preloading the drivers would reach xvfb-run's shell and
+# Xvfb too, so here leak detection is off (ASan and UBSan still on).
+echo "sanitize-ci: test_viewer (leak detection off)"
+(cd build-asan/tests && ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 ./test_viewer --gtest_brief=1)
