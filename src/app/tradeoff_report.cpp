@@ -60,7 +60,7 @@ void writeTradeoffCsv(const std::string& path, const std::vector<TradeoffRow>& r
            "floor_ms\n";
     for (const auto& r : rows)
         csv << fmt::format("{},{},{},{},{:.4f},{:.2f},{:.4f},{:.6g},{:.3f},{:.6g},{},{:.6g},{:.3f},{:.6g},{},{},{},{},{},"
-                           "{:.4f},{:.4f},{},{},{:.4f}\n",
+                           "{:.4f},{:.4f},{},{},{:.6g}\n",
                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes, r.ms,
                            r.megabytes, r.sigma, r.numerical.rmse, r.numerical.psnr, r.numerical.maxAbs,
                            r.numerical.pixelsOverOneStep, r.model.rmse, r.model.psnr, r.model.maxAbs,
