@@ -17,6 +17,8 @@ struct ViewCommand {
     int right = -1;     // Split's right side: texture unit, -1 for the screen
     bool on = true;     // Values, Probe, Split: on or off
     bool report = false;  // Probe with no argument: print what the probe reads now
+    // It only prints (help, frames): the viewer does not count it as the user at work.
+    bool onlyAsks() const { return kind == Kind::Help || kind == Kind::Frames; }
 };
 
 // Parses one command; nullopt and `error` for anything else. Blank lines

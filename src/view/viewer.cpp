@@ -198,12 +198,12 @@ public:
                 draw = true;
             }
             for (const auto& line : queue.take()) {
-                quit |= execute(line);
+                bool onlyAsked = false;
+                quit |= execute(line, onlyAsked);
                 draw = true;
-                // `frames` and `help` only ask: they do not make the user busy
-                // (the benchmark's `frames` must not shorten the slices it measures).
-                const std::string word = line.substr(0, line.find_first_of(" \t"));
-                if (word != "frames" && word != "help") lastInput_ = now;
+                // A command that only asks does not make the user busy (the
+                // benchmark's `frames` must not shorten the slices it measures).
+                if (!onlyAsked) lastInput_ = now;
             }
             if (quit) break;
             if (!draw && busy) {
@@ -214,7 +214,6 @@ public:
                     if (drawing_) continue;
                 }
                 draw = true;  // progress to show, or the finished picture
-
             }
             if (!draw) continue;
 
@@ -503,17 +502,9 @@ private:
         ImGui::EndTooltip();
     }
 
-    // Starts a frame of the passes that changed since the last one started:
-    // all after a load, the ones reading a changed Program's uniforms, the
-    // ones reading Timer while time runs. A change while a frame is under
-    // way replaces it, and the new frame also draws what the old one had not
-    // finished (the stale work is dropped, never half kept). Then draws
-    // about `budgetMs` of the frame in bands (gl/renderer_sliced.cpp), so a
-    // heavy pass never holds the window; the picture counts as drawn once
-    // the frame finishes, bit-identical to one whole render.
     // Slices of kSliceMs while the user is at it; once input has stopped
-    // for a quarter second, longer ones, so the final picture comes sooner
-    // (fewer bands and window frames between them).
+    // for 120 ms, longer ones, so the final picture comes sooner (fewer
+    // bands and window frames between them).
     void renderScene() {
         // A script's first picture is drawn whole: until it is, its targets
         // and screen hold nothing to show, and the last picture is gone
@@ -526,6 +517,14 @@ private:
         bool active = Clock::now() - lastInput_ < std::chrono::milliseconds(120);
         renderScene(active ? sliceMs_ : sliceMs_ * kIdleSliceFactor);
     }
+    // Starts a frame of the passes that changed since the last one started:
+    // all after a load, the ones reading a changed Program's uniforms, the
+    // ones reading Timer while time runs. A change while a frame is under
+    // way replaces it, and the new frame also draws what the old one had not
+    // finished (the stale work is dropped, never half kept). Then draws
+    // about `budgetMs` of the frame in bands (gl/renderer_sliced.cpp), so a
+    // heavy pass never holds the window; the picture counts as drawn once
+    // the frame finishes, bit-identical to one whole render.
     void renderScene(double budgetMs) {
         if (!s_.renderer || !s_.good) return;
         const Plan& plan = s_.good->plan;
@@ -566,7 +565,6 @@ private:
         for (const auto& t : s_.lastTimings) s_.lastFrameMs += t.ms;
         lastPictureMs_ = std::chrono::duration<double, std::milli>(Clock::now() - drawingSince_).count();
         lastPictureSlices_ = slices_;
-        slices_ = 0;
         drawing_.reset();
         ++pictureVersion_;
         // The numeric health badge reads every target back: at most twice a
@@ -631,9 +629,12 @@ private:
         std::cout.flush();
     }
 
-    bool execute(const std::string& line) {
+    // Runs one command line; true to quit. `onlyAsked`: it only printed
+    // (ViewCommand::onlyAsks).
+    bool execute(const std::string& line, bool& onlyAsked) {
         std::string error;
         auto c = parseViewCommand(line, error);
+        onlyAsked = c && c->onlyAsks();
         if (!c) {
             if (!error.empty()) std::cerr << "glimmer view: " << error << "\n";
             return false;

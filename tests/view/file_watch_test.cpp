@@ -138,6 +138,9 @@ TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     ASSERT_TRUE(scale) << err;
     EXPECT_EQ(scale->kind, ViewCommand::Kind::Scale);
     EXPECT_EQ(scale->value, 1.5);
+    EXPECT_FALSE(scale->onlyAsks());
+    EXPECT_TRUE(parseViewCommand("frames", err)->onlyAsks());
+    EXPECT_TRUE(parseViewCommand("help", err)->onlyAsks());
     EXPECT_FALSE(parseViewCommand("split 6", err));
     EXPECT_EQ(err, "usage: split LEFT_UNIT|screen RIGHT_UNIT|screen, or split off");
     EXPECT_FALSE(parseViewCommand("split 6 99", err));
