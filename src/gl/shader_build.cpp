@@ -140,4 +140,30 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
     return program;
 }
 
+unsigned buildPlainProgram(const GlApi& gl, const std::string& vertex, const std::string& fragment) {
+    unsigned program = gl.CreateProgram();
+    bool ok = true;
+    for (auto [stage, text] : {std::pair{GLenum(GL_VERTEX_SHADER), &vertex}, {GLenum(GL_FRAGMENT_SHADER), &fragment}}) {
+        unsigned sh = gl.CreateShader(stage);
+        const char* src = text->c_str();
+        gl.ShaderSource(sh, 1, &src, nullptr);
+        gl.CompileShader(sh);
+        GLint compiled = 0;
+        gl.GetShaderiv(sh, GL_COMPILE_STATUS, &compiled);
+        ok = ok && compiled;
+        gl.AttachShader(program, sh);
+        gl.DeleteShader(sh);  // freed with the program
+    }
+    GLint linked = 0;
+    if (ok) {
+        gl.LinkProgram(program);
+        gl.GetProgramiv(program, GL_LINK_STATUS, &linked);
+    }
+    if (!linked) {
+        gl.DeleteProgram(program);
+        return 0;
+    }
+    return program;
+}
+
 }  // namespace glimmer

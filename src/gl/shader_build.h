@@ -39,6 +39,13 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                       const std::vector<std::optional<std::string>>& stageTexts, const std::string& scriptFile,
                       Diagnostics& diags);
 
+// A vertex + fragment program from two texts, with no script behind it (the
+// hand-written texel-rate probe, gl/texel_rate.cpp): 0 when either stage
+// fails to compile or the program to link. glimmer-bench's hand-written
+// reference keeps its own unchecked compile on purpose: its compile time is
+// the figure Glimmer's is compared with, measured as it always was.
+unsigned buildPlainProgram(const GlApi& gl, const std::string& vertex, const std::string& fragment);
+
 // The attribute location glman's `Tangent` is bound to before linking.
 constexpr int kTangentLocation = 7;
 

@@ -37,19 +37,6 @@ void main() {
 }
 )";
 
-unsigned compile(const GlApi& gl, GLenum stage, const char* text) {
-    unsigned s = gl.CreateShader(stage);
-    gl.ShaderSource(s, 1, &text, nullptr);
-    gl.CompileShader(s);
-    GLint ok = 0;
-    gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
-    if (!ok) {
-        gl.DeleteShader(s);
-        return 0;
-    }
-    return s;
-}
-
 }  // namespace
 
 double Renderer::texelRateMs(int width, int height, TextureDecl::Format format, int taps, int repeat,
@@ -57,22 +44,7 @@ double Renderer::texelRateMs(int width, int height, TextureDecl::Format format, 
     if (width < 1 || height < 1 || width > 16384 || height > 16384 || taps < 1 || taps > 1024 || repeat < 1) return -1;
     const GlApi& gl = *gl_;
     const std::string fragment = fmt::format("#version 330 compatibility\nconst int kTaps = {};\n{}", taps, kFragment);
-    unsigned vs = compile(gl, GL_VERTEX_SHADER, kVertex), fs = compile(gl, GL_FRAGMENT_SHADER, fragment.c_str());
-    unsigned prog = 0;
-    if (vs && fs) {
-        prog = gl.CreateProgram();
-        gl.AttachShader(prog, vs);
-        gl.AttachShader(prog, fs);
-        gl.LinkProgram(prog);
-        GLint ok = 0;
-        gl.GetProgramiv(prog, GL_LINK_STATUS, &ok);
-        if (!ok) {
-            gl.DeleteProgram(prog);
-            prog = 0;
-        }
-    }
-    if (vs) gl.DeleteShader(vs);
-    if (fs) gl.DeleteShader(fs);
+    const unsigned prog = buildPlainProgram(gl, kVertex, fragment);
     if (!prog) return -1;
 
     // Noise, not a cleared texture: a driver may keep a cleared one compressed.
