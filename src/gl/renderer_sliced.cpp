@@ -5,7 +5,7 @@
 // llvmpipe cannot be interrupted inside a draw, so the only way to bound
 // the time one call takes is to give it less to draw; and the scissor
 // changes which fragments are written, never what a fragment computes, so
-// the finished frame is bit-identical to render() (tests/gl checks it).
+// the finished frame is bit-identical to render() (tests/render/sliced_frame_test.cpp checks it).
 #include "gl/renderer_internal.h"
 
 namespace glimmer {
