@@ -3,6 +3,7 @@
 #include <vector>
 
 #include "backends/context.h"
+#include "backends/driver_shader_cache.h"
 // osmesa.h needs GLAPI, which other GL headers may have consumed.
 #ifndef GLAPI
 #define GLAPI extern
@@ -69,6 +70,7 @@ private:
 }  // namespace
 
 std::unique_ptr<GlContext> createOsMesaContext(std::string& error) {
+    disableDriverShaderCache();  // before the driver loads: logs must not depend on an earlier run
     const OsMesaLibrary* lib = OsMesaLibrary::open(error);
     if (!lib) return nullptr;
     // glman's scripts need the compatibility profile: gl_ModelViewProjectionMatrix,
