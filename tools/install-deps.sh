@@ -1,6 +1,10 @@
 #!/usr/bin/env bash
 # Installs what Glimmer needs to build and test on Debian 12, from Debian's
 # own packages. Safe to run again: apt-get skips what is there.
+#   tools/install-deps.sh          everything: build, render, every test
+#   tools/install-deps.sh render   only what building and running glimmer
+#                                  needs (the README's first command: a
+#                                  newcomer's first picture sooner)
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -13,18 +17,39 @@ packages=(
   libwebp-dev                         # render --frames: animated WebP (WebPAnimEncoder/Decoder)
   fonts-dejavu-core                   # labels of sheets and charts (DejaVu Sans through stb_truetype)
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
+)
+test_packages=(
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server
+  locales                             # de_DE.UTF-8: tests run under a decimal-comma locale too
   clang-14 libclang-rt-14-dev         # libFuzzer targets and sanitizers (tools/fuzz-ci.sh)
   x11-apps                            # xwd: the viewer test reads the X screen back
   xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
-  fonts-dejavu-core                   # glimmer view's panel font (a TTF, crisp at any --ui-scale)
 )
+case "${1:-all}" in
+  render) ;;
+  all) packages+=("${test_packages[@]}") ;;
+  *) echo "usage: tools/install-deps.sh [render|all]" >&2; exit 2 ;;
+esac
 # Update the package lists only when a package is missing: a second run
 # should not touch the network.
 if ! dpkg-query -W -f='${Status}\n' "${packages[@]}" 2>/dev/null | grep -qv '^install ok installed$' \
    && [ "$(dpkg-query -W -f='${Status}\n' "${packages[@]}" 2>/dev/null | wc -l)" -eq "${#packages[@]}" ]; then
+  have_all=1
+fi
+# The German locale the tests use (tests/lang/locale_test.cpp, .ci/run):
+# generated once, when the locales package is there and it is not.
+make_locale() {
+  if [ "${1:-all}" = all ] && ! locale -a 2>/dev/null | grep -qi '^de_DE\.utf-\?8$'; then
+    $SUDO sed -i 's/^# *\(de_DE.UTF-8 UTF-8\)/\1/' /etc/locale.gen
+    grep -q '^de_DE.UTF-8 UTF-8' /etc/locale.gen || echo 'de_DE.UTF-8 UTF-8' | $SUDO tee -a /etc/locale.gen >/dev/null
+    $SUDO locale-gen >/dev/null
+  fi
+}
+if [ -n "${have_all:-}" ]; then
+  make_locale "${1:-all}"
   exit 0
 fi
 export DEBIAN_FRONTEND=noninteractive
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
+make_locale "${1:-all}"

@@ -5,14 +5,13 @@
 
 namespace glimmer {
 
-bool disableDriverShaderCache() {
+bool disableMesaShaderCache() {
     const char* keep = std::getenv("GLIMMER_DRIVER_SHADER_CACHE");
     if (keep && std::strcmp(keep, "1") == 0) return false;
     // Overwritten even when the user set them: a log that depends on an
     // earlier run is what this prevents.
     setenv("MESA_SHADER_CACHE_DISABLE", "true", 1);
     setenv("MESA_GLSL_CACHE_DISABLE", "true", 1);
-    setenv("__GL_SHADER_DISK_CACHE", "0", 1);
     return true;
 }
 

@@ -84,7 +84,7 @@ F eglProc(const char* name) {
 }  // namespace
 
 std::unique_ptr<GlContext> createEglDeviceContext(std::string& error) {
-    disableDriverShaderCache();  // before the driver loads: logs must not depend on an earlier run
+    disableMesaShaderCache();  // before the driver loads: logs must not depend on an earlier run
     const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasExtension(clientExts, "EGL_EXT_platform_device")) {
         error = "egl-device: no EGL_EXT_platform_device";
@@ -115,7 +115,7 @@ std::unique_ptr<GlContext> createEglDeviceContext(std::string& error) {
 }
 
 std::unique_ptr<GlContext> createEglSurfacelessContext(std::string& error) {
-    disableDriverShaderCache();  // before the driver loads: logs must not depend on an earlier run
+    disableMesaShaderCache();  // before the driver loads: logs must not depend on an earlier run
     const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     if (!hasExtension(clientExts, "EGL_MESA_platform_surfaceless")) {
         error = "egl-surfaceless: no EGL_MESA_platform_surfaceless";

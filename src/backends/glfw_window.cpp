@@ -7,7 +7,7 @@
 namespace glimmer {
 
 std::unique_ptr<GlfwWindow> GlfwWindow::open(int width, int height, const std::string& title, std::string& error) {
-    disableDriverShaderCache();  // before GLX loads the driver: logs must not depend on an earlier run
+    disableMesaShaderCache();  // before GLX loads the driver: logs must not depend on an earlier run
     if (!glfwInit()) {
         error = "cannot start GLFW (is there a display? try xvfb-run)";
         return nullptr;

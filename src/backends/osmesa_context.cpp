@@ -70,7 +70,7 @@ private:
 }  // namespace
 
 std::unique_ptr<GlContext> createOsMesaContext(std::string& error) {
-    disableDriverShaderCache();  // before the driver loads: logs must not depend on an earlier run
+    disableMesaShaderCache();  // before the driver loads: logs must not depend on an earlier run
     const OsMesaLibrary* lib = OsMesaLibrary::open(error);
     if (!lib) return nullptr;
     // glman's scripts need the compatibility profile: gl_ModelViewProjectionMatrix,
