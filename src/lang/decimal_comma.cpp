@@ -1,6 +1,6 @@
 #include "lang/decimal_comma.h"
+#include "util/numbers.h"
 
-#include <charconv>
 
 namespace glimmer {
 namespace {
@@ -68,7 +68,7 @@ void group(LogicalLine& line, size_t first, size_t last, char open, std::vector<
         const Token& frac = line.tokens[b + 1];
         std::string dotted = t.text + "." + frac.text;
         size_t skip = dotted[0] == '+' ? 1 : 0;
-        std::from_chars(dotted.data() + skip, dotted.data() + dotted.size(), t.number);
+        parseDouble(dotted.data() + skip, dotted.data() + dotted.size(), t.number);
         t.text += "," + frac.text;
         t.issue = Token::NumberIssue::DecimalComma;
         out.push_back(std::move(t));

@@ -2,9 +2,10 @@
 
 #include "lang/decimal_comma.h"
 
-#include <charconv>
 #include <cmath>
 #include <system_error>
+
+#include "util/numbers.h"
 
 namespace glimmer {
 
@@ -44,10 +45,10 @@ Token makeToken(std::string_view raw, SourceLoc loc) {
     t.kind = Token::Kind::Word;
     if (!startsLikeNumber(raw)) return t;
 
-    // from_chars is locale-independent (strtod is not) but rejects a leading '+'.
+    // Locale-independent (strtod is not), but like from_chars it rejects a leading '+'.
     size_t skip = raw[0] == '+' ? 1 : 0;
     double value = 0;
-    auto [ptr, ec] = std::from_chars(raw.data() + skip, raw.data() + raw.size(), value);
+    auto [ptr, ec] = parseDouble(raw.data() + skip, raw.data() + raw.size(), value);
     size_t used = static_cast<size_t>(ptr - raw.data());
     if (ec == std::errc::invalid_argument || used == skip) return t;
     std::string_view tail = raw.substr(used);

@@ -1,19 +1,15 @@
 #include "lang/parser.h"
 
-#include <charconv>
 #include <optional>
 
 #include "lang/lexer.h"
+#include "util/numbers.h"
 
 namespace glimmer {
 
 namespace {
 
-std::string formatNumber(double v) {
-    char buf[64];
-    auto [ptr, ec] = std::to_chars(buf, buf + sizeof buf, v);
-    return ec == std::errc{} ? std::string(buf, ptr) : std::string("?");
-}
+std::string formatNumber(double v) { return formatDouble(v); }
 
 std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 

@@ -1,10 +1,11 @@
 #include "plan/uniform_values.h"
 
 #include <algorithm>
-#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
+
+#include "util/numbers.h"
 
 namespace glimmer {
 
@@ -66,7 +67,7 @@ bool UniformValues::applySet(const Plan& plan, const std::string& assignment, Di
         if (lowered == "true" || lowered == "false") {
             value = lowered == "true" ? 1 : 0;
         } else {
-            auto [end, ec] = std::from_chars(part.data(), part.data() + part.size(), value);
+            auto [end, ec] = parseDouble(part.data(), part.data() + part.size(), value);
             if (ec != std::errc() || end != part.data() + part.size() || !std::isfinite(value)) {
                 diags.error(option, {}, fmt::format("'{}' in {} {} is not a number", part, option, assignment));
                 return false;

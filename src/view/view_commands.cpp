@@ -1,7 +1,8 @@
 #include "view/view_commands.h"
 
-#include <charconv>
 #include <sstream>
+
+#include "util/numbers.h"
 
 namespace glimmer {
 
@@ -10,7 +11,7 @@ namespace {
 bool toNumber(const std::string& s, double& v) {
     if (s == "true") return v = 1, true;
     if (s == "false") return v = 0, true;
-    auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+    auto [end, ec] = parseDouble(s.data(), s.data() + s.size(), v);
     return ec == std::errc() && end == s.data() + s.size();
 }
 
