@@ -24,6 +24,7 @@ test_packages=(
   clang-14 libclang-rt-14-dev         # libFuzzer targets and sanitizers (tools/fuzz-ci.sh)
   x11-apps                            # xwd: the viewer test reads the X screen back
   xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
+  emscripten chromium                 # the browser build (src/web) and its headless test (tools/test-web.sh)
 )
 case "${1:-all}" in
   render) ;;

@@ -4,17 +4,25 @@
 #include <cstring>
 
 #include <fcntl.h>
+#include <sys/stat.h>
+#ifdef __linux__
 #include <linux/magic.h>
 #include <sys/statfs.h>
-#include <sys/stat.h>
+#endif
 #include <unistd.h>
 
 namespace glimmer {
 namespace {
 
 // Kernel file systems whose "regular" files are not data: /proc/self/environ,
-// /proc/self/mem and /sys files report S_IFREG with size 0.
+// /proc/self/mem and /sys files report S_IFREG with size 0. Linux only: the
+// browser build's files live in Emscripten's in-memory file system, which
+// has no such files.
 bool pseudoFileSystem(int fd) {
+#ifndef __linux__
+    (void)fd;
+    return false;
+#else
     struct statfs fs {};
     if (::fstatfs(fd, &fs) != 0) return true;  // cannot tell: refuse
     switch (static_cast<unsigned long>(fs.f_type)) {
@@ -29,6 +37,7 @@ bool pseudoFileSystem(int fd) {
     case EFIVARFS_MAGIC: return true;
     default: return false;
     }
+#endif
 }
 
 std::string sizeText(std::size_t bytes) {

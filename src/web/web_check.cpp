@@ -1,0 +1,39 @@
+// The browser build's entry point, first step: `glimmer check` of a script
+// without GL (read, parse, plan; the diagnostics printed exactly as the
+// desktop prints them), over files the page has put into Emscripten's
+// in-memory file system. The renderer's WebGL 2 path comes next (issue 20);
+// this is the same lang/plan code as the desktop build, not a fork.
+//
+// Contract, for the page (src/web/page/glimmer-page.js):
+//   glimmer_check(path)        -> 0 no errors, 1 errors, 2 the file cannot be read
+//   glimmer_last_output()      -> the diagnostics of the last check, as the
+//                                 desktop's `glimmer check` prints them to stderr
+#include <emscripten/emscripten.h>
+
+#include <sstream>
+#include <string>
+
+#include "driver/console.h"
+#include "driver/load_script.h"
+
+namespace {
+std::string lastOutput;
+}
+
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE int glimmer_check(const char* path) {
+    glimmer::setVerbosity(glimmer::Verbosity::Normal);  // the CLI's default: glman notes folded
+    glimmer::Diagnostics diags;
+    glimmer::LoadedScript loaded;
+    bool read = glimmer::loadScript(path ? path : "", glimmer::PlanOptions{}, diags, loaded);
+    std::ostringstream out;
+    glimmer::printDiagnostics(diags, loaded.sources, out);
+    lastOutput = out.str();
+    if (!read) return 2;
+    return diags.errorCount() > 0 ? 1 : 0;
+}
+
+EMSCRIPTEN_KEEPALIVE const char* glimmer_last_output() { return lastOutput.c_str(); }
+
+}  // extern "C"
