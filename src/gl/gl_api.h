@@ -29,6 +29,7 @@ namespace glimmer {
     X(DrawElements) X(DrawArrays) X(Begin) X(End) X(TexCoord2f) X(Vertex2f)                             \
     X(GenBuffers) X(DeleteBuffers) X(BindBuffer) X(BufferData)                                           \
     X(GetAttribLocation) X(BindAttribLocation) X(VertexAttribPointer) X(EnableVertexAttribArray) X(DisableVertexAttribArray)  \
+    X(VertexAttrib4f)                                                                                    \
     X(CreateShader) X(DeleteShader) X(ShaderSource) X(CompileShader) X(GetShaderiv) X(GetShaderInfoLog) \
     X(CreateProgram) X(DeleteProgram) X(AttachShader) X(LinkProgram) X(GetProgramiv)                    \
     X(GetProgramInfoLog) X(UseProgram) X(GetUniformLocation) X(GetActiveUniform)                        \

@@ -236,14 +236,21 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
     // the world, the ModelView matrix stays the script's.
     glm::mat4 projection = d.projection;
     if (toScreen && scene_ != glm::mat4(1.f)) projection = d.projection * d.view * scene_ * glm::inverse(d.view);
-    gl_->MatrixMode(GL_PROJECTION);
-    gl_->LoadMatrixf(glm::value_ptr(projection));
-    gl_->MatrixMode(GL_MODELVIEW);
-    gl_->LoadMatrixf(glm::value_ptr(d.modelView));
-    gl_->Color4f(d.color.r, d.color.g, d.color.b, d.color.a);
+    // A program that declares the built-ins' stand-ins (glimmer_Vertex, ...:
+    // shader/compat_builtins.h) gets them as uniforms and attributes, the
+    // way WebGL 2 draws; any other gets the fixed-function state.
+    const bool fed = prog && prog->feed.any;
+    const BuiltinValues builtins{projection, d.modelView, d.color, d.pointSize};
+    if (!fed) {
+        gl_->MatrixMode(GL_PROJECTION);
+        gl_->LoadMatrixf(glm::value_ptr(projection));
+        gl_->MatrixMode(GL_MODELVIEW);
+        gl_->LoadMatrixf(glm::value_ptr(d.modelView));
+        gl_->Color4f(d.color.r, d.color.g, d.color.b, d.color.a);
+        gl_->ShadeModel(d.flatShading ? GL_FLAT : GL_SMOOTH);
+    }
     gl_->LineWidth(d.lineWidth);
     gl_->PointSize(d.pointSize);
-    gl_->ShadeModel(d.flatShading ? GL_FLAT : GL_SMOOTH);
 
     if (!drawProblem(prog, mesh).empty()) return;  // told in prepare
 
@@ -285,6 +292,7 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
             const UniformSetting* setting = prog->settings[k];
             uploadUniform(*gl_, u, setting ? convertUniform(setting->form, u, v) : v);
         }
+        if (fed) feedBuiltinUniforms(*gl_, prog->feed, builtins);
         if (prog->timerLocation >= 0) {
             double t = std::fmod(time / plan_->timerPeriod, 1.0);
             gl_->Uniform1f(prog->timerLocation, float(t < 0 ? t + 1 : t));
@@ -294,13 +302,17 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
     const GLsizei stride = sizeof(MeshVertex);
     gl_->BindBuffer(GL_ARRAY_BUFFER, mesh->vbo);
     gl_->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh->ibo);
-    gl_->EnableClientState(GL_VERTEX_ARRAY);
-    gl_->VertexPointer(3, GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, position)));
-    gl_->EnableClientState(GL_NORMAL_ARRAY);
-    gl_->NormalPointer(GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
-    gl_->ClientActiveTexture(GL_TEXTURE0);
-    gl_->EnableClientState(GL_TEXTURE_COORD_ARRAY);
-    gl_->TexCoordPointer(2, GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, st)));
+    if (fed) {
+        enableBuiltinAttributes(*gl_, prog->feed, builtins);
+    } else {
+        gl_->EnableClientState(GL_VERTEX_ARRAY);
+        gl_->VertexPointer(3, GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, position)));
+        gl_->EnableClientState(GL_NORMAL_ARRAY);
+        gl_->NormalPointer(GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, normal)));
+        gl_->ClientActiveTexture(GL_TEXTURE0);
+        gl_->EnableClientState(GL_TEXTURE_COORD_ARRAY);
+        gl_->TexCoordPointer(2, GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, st)));
+    }
     if (prog && prog->usesTangent) {
         gl_->EnableVertexAttribArray(kTangentLocation);
         gl_->VertexAttribPointer(kTangentLocation, 3, GL_FLOAT, GL_FALSE, stride,
@@ -308,9 +320,13 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
     }
     gl_->DrawElements(mesh->primitive, mesh->count, GL_UNSIGNED_INT, nullptr);
     if (prog && prog->usesTangent) gl_->DisableVertexAttribArray(kTangentLocation);
-    gl_->DisableClientState(GL_TEXTURE_COORD_ARRAY);
-    gl_->DisableClientState(GL_NORMAL_ARRAY);
-    gl_->DisableClientState(GL_VERTEX_ARRAY);
+    if (fed) {
+        disableBuiltinAttributes(*gl_, prog->feed);
+    } else {
+        gl_->DisableClientState(GL_TEXTURE_COORD_ARRAY);
+        gl_->DisableClientState(GL_NORMAL_ARRAY);
+        gl_->DisableClientState(GL_VERTEX_ARRAY);
+    }
     gl_->BindBuffer(GL_ARRAY_BUFFER, 0);
     gl_->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, 0);
 }

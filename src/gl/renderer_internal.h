@@ -21,6 +21,7 @@
 #include "gl/uniform_upload.h"
 #include "image/cubemap.h"
 #include "image/noise.h"
+#include "gl/builtin_feed.h"
 
 namespace glimmer {
 
@@ -36,6 +37,7 @@ struct Renderer::Program {
     std::vector<ActiveUniform> uniforms;
     std::vector<const UniformSetting*> settings;  // per uniform: how the script wrote it (null: not set)
     int timerLocation = -1;
+    BuiltinFeed feed;  // fed the compatibility built-ins by name (gl/builtin_feed.h), not by fixed-function state
     bool usesTangent = false;
     bool noise2 = false, noise3 = false;  // declares the built-in Noise2 / Noise3
     bool tessellated = false;             // has a tessellation evaluation shader: draws patches only

@@ -144,6 +144,7 @@ void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics
         p->id = id;
         p->uniforms = activeUniforms(*gl_, id);
         p->timerLocation = gl_->GetUniformLocation(id, "Timer");
+        p->feed = findBuiltinFeed(*gl_, id);
         p->usesTangent = gl_->GetAttribLocation(id, "Tangent") == kTangentLocation;
         p->name = decl.name;
         p->paintsAllItCovers = true;

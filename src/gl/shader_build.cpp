@@ -1,4 +1,5 @@
 #include "gl/shader_build.h"
+#include "gl/builtin_feed.h"
 
 #include <algorithm>
 #include <cstring>
@@ -126,6 +127,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
         program = gl.CreateProgram();
         for (unsigned sh : shaders) gl.AttachShader(program, sh);
         gl.BindAttribLocation(program, kTangentLocation, "Tangent");
+        bindBuiltinAttributes(gl, program);  // glimmer_Vertex and the others, where declared
         gl.LinkProgram(program);
         GLint status = 0;
         gl.GetProgramiv(program, GL_LINK_STATUS, &status);
