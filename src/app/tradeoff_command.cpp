@@ -64,7 +64,7 @@ void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
     sub->add_option("--format", o.format, "target format: RGBA8, RGBA16F (default), RGBA32F, R11F_G11F_B10F");
     sub->add_option("--repeat", o.repeat, "timed runs per method after one warm-up (default 5)");
     sub->add_option("--methods", o.methods, "only methods whose name contains one of these words");
-    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device or egl-surfaceless");
+    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device, egl-surfaceless or egl-gles (OpenGL ES 3.0: WebGL 2's level)");
     sub->add_option("--match-sigma", o.matchSigma,
                     "compare at one blur width: each family (superblur, sep9, linear5, dual Kawase) scaled to the "
                     "parameter whose sigma comes nearest S (0.5 to 16); the sigma column says how near (default: "

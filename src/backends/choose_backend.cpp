@@ -10,6 +10,7 @@ bool parseBackend(const std::string& text, BackendChoice& out) {
     else if (text == "egl") out = BackendChoice::Egl;
     else if (text == "egl-device") out = BackendChoice::EglDevice;
     else if (text == "egl-surfaceless") out = BackendChoice::EglSurfaceless;
+    else if (text == "egl-gles") out = BackendChoice::EglGles;
     else return false;
     return true;
 }
@@ -25,6 +26,7 @@ std::unique_ptr<GlContext> createContext(BackendChoice choice, std::string& erro
     case BackendChoice::Egl: order = {createEglDeviceContext, createEglSurfacelessContext}; break;
     case BackendChoice::EglDevice: order = {createEglDeviceContext}; break;
     case BackendChoice::EglSurfaceless: order = {createEglSurfacelessContext}; break;
+    case BackendChoice::EglGles: order = {createEglGlesContext}; break;
     }
     std::string reasons;
     for (Factory make : order) {

@@ -11,12 +11,12 @@ class GlContext {
 public:
     virtual ~GlContext() = default;
     virtual void* getProcAddress(const char* name) = 0;
-    virtual std::string name() const = 0;  // "osmesa", "egl-device", "egl-surfaceless", "glfw"
+    virtual std::string name() const = 0;  // "osmesa", "egl-device", "egl-surfaceless", "egl-gles", "glfw"
 };
 
-enum class BackendChoice { Auto, OsMesa, Egl, EglDevice, EglSurfaceless };
+enum class BackendChoice { Auto, OsMesa, Egl, EglDevice, EglSurfaceless, EglGles };
 
-// Parses "auto", "osmesa", "egl", "egl-device", "egl-surfaceless".
+// Parses "auto", "osmesa", "egl", "egl-device", "egl-surfaceless", "egl-gles".
 bool parseBackend(const std::string& text, BackendChoice& out);
 
 std::unique_ptr<GlContext> createOsMesaContext(std::string& error);
@@ -24,6 +24,10 @@ std::unique_ptr<GlContext> createOsMesaContext(std::string& error);
 std::unique_ptr<GlContext> createEglDeviceContext(std::string& error);
 // Mesa's surfaceless platform (llvmpipe on a machine without a GPU).
 std::unique_ptr<GlContext> createEglSurfacelessContext(std::string& error);
+// OpenGL ES 3.0 on Mesa's surfaceless platform: WebGL 2's feature level on
+// the desktop, so the browser's drawing path is tested natively. Shaders
+// must be GLSL ES (the translated ones); chosen only by name, never by auto.
+std::unique_ptr<GlContext> createEglGlesContext(std::string& error);
 
 // auto: a GPU through EGL, else OSMesa, else EGL surfaceless. egl: device,
 // else surfaceless. `error` collects why each refused.

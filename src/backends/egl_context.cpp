@@ -35,8 +35,13 @@ bool hasExtension(const char* list, const char* ext) {
     return false;
 }
 
-// Makes a surfaceless GL compatibility context on an initialised display.
-std::unique_ptr<GlContext> makeContext(EGLDisplay dpy, const std::string& name, std::string& error) {
+enum class Api { DesktopCompat, Es30 };
+
+// Makes a surfaceless context on an initialised display: desktop GL 3.3
+// compatibility, or OpenGL ES 3.0, the feature level of WebGL 2.
+std::unique_ptr<GlContext> makeContext(EGLDisplay dpy, const std::string& name, std::string& error,
+                                       Api api = Api::DesktopCompat) {
+    const bool es = api == Api::Es30;
     if (!hasExtension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
         error = name + ": no EGL_KHR_surfaceless_context";
         eglTerminate(dpy);
@@ -46,24 +51,25 @@ std::unique_ptr<GlContext> makeContext(EGLDisplay dpy, const std::string& name, 
     // display allows that (Mesa's surfaceless platform offers none for GL).
     EGLConfig config = EGL_NO_CONFIG_KHR;
     EGLint count = 0;
-    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+    const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, es ? EGL_OPENGL_ES3_BIT : EGL_OPENGL_BIT, EGL_NONE};
     if (!hasExtension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_no_config_context") &&
         (!eglChooseConfig(dpy, configAttribs, &config, 1, &count) || count < 1)) {
-        error = name + ": no EGL config for desktop OpenGL";
+        error = name + (es ? ": no EGL config for OpenGL ES 3" : ": no EGL config for desktop OpenGL");
         eglTerminate(dpy);
         return nullptr;
     }
-    if (!eglBindAPI(EGL_OPENGL_API)) {
-        error = name + ": cannot bind the desktop OpenGL API";
+    if (!eglBindAPI(es ? EGL_OPENGL_ES_API : EGL_OPENGL_API)) {
+        error = name + (es ? ": cannot bind the OpenGL ES API" : ": cannot bind the desktop OpenGL API");
         eglTerminate(dpy);
         return nullptr;
     }
     const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                      EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
-    EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, contextAttribs);
+    const EGLint esAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
+    EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, es ? esAttribs : contextAttribs);
     if (ctx == EGL_NO_CONTEXT) {
-        error = name + ": cannot create a GL 3.3 compatibility context";
+        error = name + (es ? ": cannot create an OpenGL ES 3.0 context" : ": cannot create a GL 3.3 compatibility context");
         eglTerminate(dpy);
         return nullptr;
     }
@@ -112,6 +118,30 @@ std::unique_ptr<GlContext> createEglDeviceContext(std::string& error) {
     }
     if (error.empty()) error = "egl-device: no GPU among the EGL devices";
     return nullptr;
+}
+
+namespace {
+
+EGLDisplay surfacelessDisplay() {
+    const char* clientExts = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    if (!hasExtension(clientExts, "EGL_MESA_platform_surfaceless")) return EGL_NO_DISPLAY;
+    auto getPlatformDisplay = eglProc<PFNEGLGETPLATFORMDISPLAYEXTPROC>("eglGetPlatformDisplayEXT");
+    EGLDisplay dpy = getPlatformDisplay ? getPlatformDisplay(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr)
+                                        : EGL_NO_DISPLAY;
+    if (dpy != EGL_NO_DISPLAY && !eglInitialize(dpy, nullptr, nullptr)) return EGL_NO_DISPLAY;
+    return dpy;
+}
+
+}  // namespace
+
+std::unique_ptr<GlContext> createEglGlesContext(std::string& error) {
+    disableMesaShaderCache();  // before the driver loads: logs must not depend on an earlier run
+    EGLDisplay dpy = surfacelessDisplay();
+    if (dpy == EGL_NO_DISPLAY) {
+        error = "egl-gles: no Mesa surfaceless display";
+        return nullptr;
+    }
+    return makeContext(dpy, "egl-gles", error, Api::Es30);
 }
 
 std::unique_ptr<GlContext> createEglSurfacelessContext(std::string& error) {

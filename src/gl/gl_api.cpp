@@ -1,5 +1,7 @@
 #include "gl/gl_api.h"
 
+#include <cstring>
+
 namespace glimmer {
 
 bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error) {
@@ -8,6 +10,13 @@ bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error) {
     gl.name = reinterpret_cast<decltype(gl.name)>(getProc("gl" #name));       \
     if (!gl.name) missing += (missing.empty() ? "gl" : ", gl") + std::string(#name);
     GLIMMER_GL_FUNCTIONS(GLIMMER_GL_LOAD)
+    if (gl.GetString) {
+        const char* version = reinterpret_cast<const char*>(gl.GetString(GL_VERSION));
+        gl.es = version && std::strncmp(version, "OpenGL ES", 9) == 0;
+    }
+    if (!gl.es) {
+        GLIMMER_GL_DESKTOP_FUNCTIONS(GLIMMER_GL_LOAD)
+    }
 #undef GLIMMER_GL_LOAD
     if (!missing.empty()) {
         error = "the OpenGL driver lacks " + missing;

@@ -19,14 +19,14 @@
 
 namespace glimmer {
 
+// Every function here is in OpenGL ES 3.0 (and so in WebGL 2) as well as in
+// desktop OpenGL: the renderer's whole path on an ES context.
 #define GLIMMER_GL_FUNCTIONS(X)                                                                          \
     X(GetError) X(GetString) X(GetIntegerv) X(Enable) X(Disable) X(Viewport) X(Clear) X(ClearColor)     \
-    X(ClearDepth) X(DepthFunc) X(DepthMask) X(Finish) X(Flush) X(ReadPixels) X(PixelStorei)             \
-    X(MatrixMode) X(LoadMatrixf) X(Color4f) X(LineWidth) X(PointSize) X(ShadeModel)                     \
-    X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexImage3D) X(TexParameteri) X(GetTexImage) \
-    X(ActiveTexture) X(ClientActiveTexture) X(GenerateMipmap)                                                              \
-    X(EnableClientState) X(DisableClientState) X(VertexPointer) X(NormalPointer) X(TexCoordPointer)     \
-    X(DrawElements) X(DrawArrays) X(Begin) X(End) X(TexCoord2f) X(Vertex2f)                             \
+    X(DepthFunc) X(DepthMask) X(Finish) X(Flush) X(ReadPixels) X(PixelStorei) X(LineWidth)             \
+    X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexImage3D) X(TexParameteri)       \
+    X(ActiveTexture) X(GenerateMipmap)                                                                   \
+    X(DrawElements) X(DrawArrays)                                                                        \
     X(GenBuffers) X(DeleteBuffers) X(BindBuffer) X(BufferData)                                           \
     X(GetAttribLocation) X(BindAttribLocation) X(VertexAttribPointer) X(EnableVertexAttribArray) X(DisableVertexAttribArray)  \
     X(VertexAttrib4f)                                                                                    \
@@ -38,18 +38,36 @@ namespace glimmer {
     X(UniformMatrix4fv)                                                                                  \
     X(GenFramebuffers) X(DeleteFramebuffers) X(BindFramebuffer) X(FramebufferTexture2D)                 \
     X(CheckFramebufferStatus) X(GenRenderbuffers) X(DeleteRenderbuffers) X(BindRenderbuffer)            \
-    X(RenderbufferStorage) X(FramebufferRenderbuffer) X(DrawBuffers) X(DrawBuffer) X(ReadBuffer)        \
-    X(BlitFramebuffer) X(Scissor) X(GenVertexArrays) X(BindVertexArray) X(DeleteVertexArrays)                      \
-    X(GenQueries) X(DeleteQueries) X(BeginQuery) X(EndQuery) X(GetQueryObjectui64v) X(PatchParameteri)
+    X(RenderbufferStorage) X(FramebufferRenderbuffer) X(DrawBuffers) X(ReadBuffer)                      \
+    X(BlitFramebuffer) X(Scissor) X(GenVertexArrays) X(BindVertexArray) X(DeleteVertexArrays)           \
+    X(GenQueries) X(DeleteQueries) X(BeginQuery) X(EndQuery)
+
+// Desktop OpenGL only: the fixed-function state that feeds the compatibility
+// built-ins, client arrays, whole-texture reads, GPU timer results,
+// tessellation patches. Null on an OpenGL ES context (WebGL 2, EGL's ES
+// API), where the renderer takes its ES path instead (GlApi::es).
+#define GLIMMER_GL_DESKTOP_FUNCTIONS(X)                                                                  \
+    X(ClearDepth) X(MatrixMode) X(LoadMatrixf) X(Color4f) X(PointSize) X(ShadeModel)                    \
+    X(GetTexImage) X(ClientActiveTexture)                                                                \
+    X(EnableClientState) X(DisableClientState) X(VertexPointer) X(NormalPointer) X(TexCoordPointer)     \
+    X(Begin) X(End) X(TexCoord2f) X(Vertex2f) X(DrawBuffer)                                              \
+    X(GetQueryObjectui64v) X(PatchParameteri)
 
 struct GlApi {
 #define GLIMMER_GL_MEMBER(name) decltype(&::gl##name) name = nullptr;
     GLIMMER_GL_FUNCTIONS(GLIMMER_GL_MEMBER)
+    GLIMMER_GL_DESKTOP_FUNCTIONS(GLIMMER_GL_MEMBER)
 #undef GLIMMER_GL_MEMBER
+    // The context is OpenGL ES (its GL_VERSION begins "OpenGL ES"): the
+    // desktop entries are null, whatever getProcAddress would hand out for
+    // them (Mesa's EGL returns a stub for any name).
+    bool es = false;
 };
 
 
-// Fills every entry; false and the missing names in `error` if any is absent.
+// Fills every entry: on desktop OpenGL all of them, on OpenGL ES the common
+// ones. False, and the missing names in `error`, if any it needs is absent.
+// Call with the context current (it reads GL_VERSION).
 bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error);
 
 }  // namespace glimmer

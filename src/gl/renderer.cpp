@@ -81,7 +81,8 @@ bool Renderer::gpuTimers() const {
         std::string name = rendererName();
         bool software = name.find("llvmpipe") != std::string::npos || name.find("softpipe") != std::string::npos ||
                         name.find("Software") != std::string::npos;
-        gpuTimers_ = software ? 0 : 1;
+        // OpenGL ES has no GL_TIME_ELAPSED: a wall clock there too.
+        gpuTimers_ = software || gl_->es ? 0 : 1;
     }
     return gpuTimers_ == 1;
 }
@@ -241,7 +242,7 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
     // way WebGL 2 draws; any other gets the fixed-function state.
     const bool fed = prog && prog->feed.any;
     const BuiltinValues builtins{projection, d.modelView, d.color, d.pointSize};
-    if (!fed) {
+    if (!fed && !gl_->es) {
         gl_->MatrixMode(GL_PROJECTION);
         gl_->LoadMatrixf(glm::value_ptr(projection));
         gl_->MatrixMode(GL_MODELVIEW);
@@ -250,7 +251,7 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
         gl_->ShadeModel(d.flatShading ? GL_FLAT : GL_SMOOTH);
     }
     gl_->LineWidth(d.lineWidth);
-    gl_->PointSize(d.pointSize);
+    if (gl_->PointSize) gl_->PointSize(d.pointSize);  // ES: gl_PointSize from glimmer_PointSize
 
     if (!drawProblem(prog, mesh).empty()) return;  // told in prepare
 
@@ -281,7 +282,10 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
         }
     }
     gl_->ActiveTexture(GL_TEXTURE0);
-    if (mesh->primitive == GL_PATCHES) gl_->PatchParameteri(GL_PATCH_VERTICES, d.patchVertices);
+    if (mesh->primitive == GL_PATCHES) {
+        if (!gl_->PatchParameteri) return;  // OpenGL ES 3.0: no tessellation (told in prepare)
+        gl_->PatchParameteri(GL_PATCH_VERTICES, d.patchVertices);
+    }
 
     gl_->UseProgram(prog ? prog->id : 0);
     if (prog) {
@@ -304,7 +308,7 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
     gl_->BindBuffer(GL_ELEMENT_ARRAY_BUFFER, mesh->ibo);
     if (fed) {
         enableBuiltinAttributes(*gl_, prog->feed, builtins);
-    } else {
+    } else if (!gl_->es) {
         gl_->EnableClientState(GL_VERTEX_ARRAY);
         gl_->VertexPointer(3, GL_FLOAT, stride, reinterpret_cast<void*>(offsetof(MeshVertex, position)));
         gl_->EnableClientState(GL_NORMAL_ARRAY);
@@ -322,7 +326,7 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
     if (prog && prog->usesTangent) gl_->DisableVertexAttribArray(kTangentLocation);
     if (fed) {
         disableBuiltinAttributes(*gl_, prog->feed);
-    } else {
+    } else if (!gl_->es) {
         gl_->DisableClientState(GL_TEXTURE_COORD_ARRAY);
         gl_->DisableClientState(GL_NORMAL_ARRAY);
         gl_->DisableClientState(GL_VERTEX_ARRAY);

@@ -125,6 +125,22 @@ inline GLenum internalFormat(TextureDecl::Format f) {
     return GL_RGBA8;
 }
 
+// A format and type glTexImage2D accepts with that internal format on
+// OpenGL ES 3.0 as well as on the desktop (ES takes only the matching
+// pairs: RGBA8 wants bytes, R11F_G11F_B10F wants RGB).
+struct PixelTransfer {
+    GLenum format, type;
+};
+inline PixelTransfer transferFor(TextureDecl::Format f) {
+    switch (f) {
+    case TextureDecl::Format::RGBA8: return {GL_RGBA, GL_UNSIGNED_BYTE};
+    case TextureDecl::Format::RGBA16F: return {GL_RGBA, GL_FLOAT};
+    case TextureDecl::Format::RGBA32F: return {GL_RGBA, GL_FLOAT};
+    case TextureDecl::Format::R11F_G11F_B10F: return {GL_RGB, GL_FLOAT};
+    }
+    return {GL_RGBA, GL_UNSIGNED_BYTE};
+}
+
 inline GLenum glPrimitive(Mesh::Primitive p) {
     switch (p) {
     case Mesh::Primitive::Triangles: return GL_TRIANGLES;

@@ -20,7 +20,7 @@ bool Renderer::prepare(const Plan& plan, const Assets& assets, Diagnostics& diag
     programs_.resize(plan.programs.size());
     int errorsBefore = diags.errorCount();
     uploadTextures(plan, assets);
-    gl_->Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);
+    if (!gl_->es) gl_->Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // ES 3.0: always seamless, and no such enum
     uploadMeshes(plan, assets);
     buildPrograms(plan, assets, diags);
     warnSamplerKinds(plan, everything, diags);
@@ -90,7 +90,8 @@ void Renderer::uploadTextures(const Plan& plan, const Assets& assets) {
         } else {
             // Start targets black rather than with whatever memory held, in
             // the format the script asked for; cleared on the GPU.
-            gl_->TexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat(t.format)), t.width, t.height, 0, GL_RGBA, GL_FLOAT,
+            PixelTransfer tr = transferFor(t.format);
+            gl_->TexImage2D(GL_TEXTURE_2D, 0, GLint(internalFormat(t.format)), t.width, t.height, 0, tr.format, tr.type,
                             nullptr);
             clearTexture2D(*gl_, id);
             gl_->BindTexture(target, id);

@@ -18,6 +18,24 @@ Image Renderer::readScreen() const {
     return flipRows(std::move(img));
 }
 
+namespace {
+
+// OpenGL ES cannot read a texture whole (no glGetTexImage): it is attached to
+// a framebuffer of its own and read with glReadPixels, rows bottom first as
+// glGetTexImage gives them.
+void readThroughFramebuffer(const GlApi& gl, unsigned texture, int width, int height, GLenum type, void* out) {
+    unsigned fbo = 0;
+    gl.GenFramebuffers(1, &fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl.ReadPixels(0, 0, width, height, GL_RGBA, type, out);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl.DeleteFramebuffers(1, &fbo);
+}
+
+}  // namespace
+
 Image Renderer::readTextureFloat(int texture) const {
     if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
     const TextureObject& t = textures_[size_t(texture)];
@@ -25,7 +43,8 @@ Image Renderer::readTextureFloat(int texture) const {
     Image img = Image::rgbaF32(t.width, t.height);
     gl_->BindTexture(GL_TEXTURE_2D, t.id);
     gl_->PixelStorei(GL_PACK_ALIGNMENT, 4);
-    gl_->GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img.f32.data());
+    if (gl_->es) readThroughFramebuffer(*gl_, t.id, t.width, t.height, GL_FLOAT, img.f32.data());
+    else gl_->GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, img.f32.data());
     gl_->BindTexture(GL_TEXTURE_2D, 0);
     img.f32 = flipRows(img.f32, img.height);
     return img;
@@ -52,7 +71,8 @@ Image Renderer::readTexture(int texture) const {
     Image img = Image::rgba8(t.width, t.height);
     gl_->BindTexture(GL_TEXTURE_2D, t.id);
     gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_->GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
+    if (gl_->es) readThroughFramebuffer(*gl_, t.id, t.width, t.height, GL_UNSIGNED_BYTE, img.u8.data());
+    else gl_->GetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
     gl_->BindTexture(GL_TEXTURE_2D, 0);
     return flipRows(std::move(img));
 }

@@ -51,7 +51,7 @@ TEST(CliUnix, HelpStatesTheShortcutAndEveryDefault) {
     EXPECT_NE(top.out.find("`glimmer SCRIPT.glib` is `glimmer view SCRIPT.glib`"), std::string::npos) << top.out;
     auto render = runGlimmer({"help", "render"});
     EXPECT_NE(render.out.find("-o,--output TEXT=out.png"), std::string::npos) << render.out;
-    EXPECT_NE(render.out.find("--backend TEXT:{auto,osmesa,egl,egl-device,egl-surfaceless}=auto"), std::string::npos);
+    EXPECT_NE(render.out.find("--backend TEXT:{auto,osmesa,egl,egl-device,egl-surfaceless,egl-gles}=auto"), std::string::npos);
     EXPECT_NE(render.out.find("(default: WindowSize, else 600x600)"), std::string::npos);
     EXPECT_NE(render.out.find("--fps FLOAT=24"), std::string::npos);
     EXPECT_NE(render.out.find("--frames INT=1"), std::string::npos);

@@ -70,7 +70,7 @@ TEST(CliUsage, UnknownBackend) {
     TempDir dir;
     auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--backend", "nope"});
     EXPECT_EQ(r.exitCode, 2) << r.err;
-    EXPECT_NE(r.err.find("--backend: nope not in {auto,osmesa,egl,egl-device,egl-surfaceless}"), std::string::npos)
+    EXPECT_NE(r.err.find("--backend: nope not in {auto,osmesa,egl,egl-device,egl-surfaceless,egl-gles}"), std::string::npos)
         << r.err;
     EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }

@@ -121,6 +121,21 @@ TEST(BuiltinFeed, AFedProgramDrawsWhatTheFixedFunctionStateDraws) {
     }
 }
 
+// On OpenGL ES 3.0 (egl-gles: WebGL 2's level, Mesa's surfaceless
+// llvmpipe), with no fixed-function state and no glGetTexImage at all, the
+// fed program draws the same picture as the compatibility one on the
+// desktop.
+TEST(BuiltinFeed, OnOpenGlEsTheFedProgramDrawsTheDesktopsPicture) {
+    Rendered compat = renderWith("osmesa", kCompatVertex, kCompatFragment);
+    Rendered es = renderWith("egl-gles", kFedVertex, kFedFragment);
+    ASSERT_TRUE(compat.ok) << compat.error;
+    ASSERT_TRUE(es.ok) << es.error;
+    EXPECT_GT(litPixels(es.screen), 96 * 96 / 10);
+    Difference d = compareRgb(compat.screen, es.screen);
+    EXPECT_LE(d.maxSteps, 1) << d.maxSteps << " steps at (" << d.x << ", " << d.y << "), " << d.pixelsOver1
+                             << " pixels differ by more than 1";
+}
+
 // glimmer_Color is the script's Color for the whole draw (a constant
 // attribute, as glColor was): each object in its own colour.
 TEST(BuiltinFeed, TheColourIsOneValueForTheWholeDraw) {
