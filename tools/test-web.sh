@@ -1,8 +1,13 @@
 #!/usr/bin/env bash
-# The browser build against the desktop build (issue 20, first step): every
-# bundled script checked in headless Chromium (SwiftShader, no GPU needed)
-# prints exactly the diagnostics and exit status that the desktop's
-# `glimmer check` prints, and a missing script is refused the same way.
+# The browser build against the desktop build (issue 20), in headless
+# Chromium (SwiftShader's WebGL 2, no GPU needed):
+# - every bundled script checked in the page prints exactly the diagnostics
+#   and exit status that the desktop's `glimmer check` prints, and a missing
+#   script is refused the same way;
+# - a script drawn in the page (tests/data/web/lit_es.glib, GLSL ES shaders)
+#   is the picture `glimmer render` draws of it, within what two
+#   rasterizers may differ by, at its default and with a value set as
+#   --set sets it (and that value really changes the picture).
 # Builds the web module first (tools/build-web.sh).
 # Usage: tools/test-web.sh [DESKTOP_GLIMMER] [WEB_BUILD_DIR]
 #        (default build/src/app/glimmer, build-web)
@@ -45,5 +50,64 @@ for script in $(find scripts -name '*.glib' | sort) scripts/no_such_script.glib;
     diff <(echo "$desktop_diags") <(echo "$web_diags") | head -20
   fi
 done
+
+# The page's picture of a script as a PNG file, through the project's own
+# command for it (the script's folder handed to the page as a lesson).
+page_picture() {
+  WEB_BUILD="$web" tools/render-web.sh "$1" --size "$2" ${3:+--set "$3"} -o "$4" >/dev/null 2>&1
+  [ -s "$4" ]
+}
+# Two rasterizers (llvmpipe, SwiftShader) agree except where a pixel centre
+# lies on a triangle's edge or a shader's step() sits on its threshold: such
+# pixels may go either way, at full size. So the bound is on how many
+# differ by more than 2% (5 steps of 255): at most 0.1% of the picture,
+# and PSNR at least 40 dB. Measured for lit_es.glib at 256x256: 26 pixels
+# (0.04%), PSNR 44.3 dB.
+same_picture() {
+  local over psnr pixels
+  over=$(compare -metric AE -fuzz 2% "$1" "$2" null: 2>&1)
+  psnr=$(compare -metric PSNR "$1" "$2" null: 2>&1)
+  pixels=$(identify -format '%[fx:w*h]' "$1")
+  echo "    $over of $pixels pixels differ by more than 2%, PSNR $psnr dB"
+  python3 -c "import sys; o, p, n = float(sys.argv[1]), sys.argv[2], float(sys.argv[3]); \
+sys.exit(0 if o <= n / 1000 and (p == 'inf' or float(p) >= 40) else 1)" "$over" "$psnr" "$pixels"
+}
+pictures="$(mktemp -d)"
+trap 'rm -rf "$profile" "$pictures"' EXIT
+script=tests/data/web/lit_es.glib
+for sets in "" "uStripes=3"; do
+  desk="$pictures/desktop.png" shot="$pictures/page.png"
+  args=(); [ -n "$sets" ] && args=(--set "$sets")
+  "$g" -q render "$script" --size 256x256 "${args[@]}" -o "$desk"
+  echo "  page against render: $script ${sets:-(defaults)}"
+  if page_picture "$script" 256x256 "$sets" "$shot" && same_picture "$shot" "$desk"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "DIFFERS: $script drawn in the page ${sets:+with $sets }is not render's picture"
+  fi
+  cp "$shot" "$pictures/page_${sets:-default}.png" 2>/dev/null || true
+done
+# The set value reached the picture: the two page pictures differ.
+if [ "$(compare -metric AE "$pictures/page_default.png" "$pictures/page_uStripes=3.png" null: 2>&1)" -gt 1000 ]; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: uStripes=3 did not change the page's picture"
+fi
+
+# A lesson whose file would leave the page's /user folder is refused as a
+# whole, with the reason, and nothing is drawn.
+printf 'globalThis.glimmerLesson = {"files": {"a.glib": "", "../escape.glib": ""}};\n' > "$pictures/hostile.js"
+verdict="$(timeout 60 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
+  --enable-unsafe-swiftshader --allow-file-access-from-files --virtual-time-budget=10000 \
+  --dump-dom "file://$page?lesson=file://$pictures/hostile.js" 2>/dev/null | grep -o '<p id="verdict"[^<]*')"
+if grep -q 'data-exit="2"' <<<"$verdict" && grep -Eq 'refused: the path ("|&quot;)\.\./escape\.glib("|&quot;) leaves the folder' <<<"$verdict"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: a lesson path leaving /user was not refused: $verdict"
+fi
+
 echo "web: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

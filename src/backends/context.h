@@ -29,6 +29,10 @@ std::unique_ptr<GlContext> createEglSurfacelessContext(std::string& error);
 // must be GLSL ES (the translated ones); chosen only by name, never by auto.
 std::unique_ptr<GlContext> createEglGlesContext(std::string& error);
 
+// The browser build's only backend (backends/webgl_context.cpp): WebGL 2 on
+// the page's canvas named by the CSS selector ("#canvas").
+std::unique_ptr<GlContext> createWebGl2Context(const char* canvasSelector, std::string& error);
+
 // auto: a GPU through EGL, else OSMesa, else EGL surfaceless. egl: device,
 // else surfaceless. `error` collects why each refused.
 std::unique_ptr<GlContext> createContext(BackendChoice choice, std::string& error);

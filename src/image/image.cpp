@@ -1,10 +1,9 @@
 #include "image/image.h"
+#include "image/float_pixels.h"
 #include "image/sniff.h"
 #include "util/read_file.h"
 
 #include <stb/stb_image_write.h>
-#include <tinyexr.h>
-#include <png.h>
 
 #include <algorithm>
 #include <cmath>
@@ -153,8 +152,8 @@ bool consistent(const Image& img) {
     return img.width > 0 && img.height > 0 && (img.type == Image::Type::F32 ? img.f32.size() : img.u8.size()) == n;
 }
 
-// The pixels of a float writer's input as float RGBA; false (and why, named
-// after the writer) when the image is empty or its buffer does not fit it.
+}  // namespace
+
 bool floatPixels(const Image& img, const char* writer, std::vector<float>& px, std::string& error) {
     if (!consistent(img)) {
         error = std::string(writer) + ": empty or inconsistent image";
@@ -163,8 +162,6 @@ bool floatPixels(const Image& img, const char* writer, std::vector<float>& px, s
     px = asFloats(img);
     return true;
 }
-
-}  // namespace
 
 bool writeHdr(const std::string& path, const Image& img, std::string& error) {
     std::vector<float> f;
@@ -196,38 +193,6 @@ bool writePfm(const std::string& path, const Image& img, std::string& error) {
     ok = (std::fclose(f) == 0) && ok;
     if (!ok) error = "cannot write " + path;
     return ok;
-}
-
-bool writePng16(const std::string& path, const Image& img, std::string& error) {
-    // libpng's simplified API: 16 bits a channel, the values as they are
-    // (clamped to 0..1), tagged linear (gAMA 1.0).
-    std::vector<float> px;
-    if (!floatPixels(img, "writePng16", px, error)) return false;
-    std::vector<png_uint_16> out(px.size());
-    for (size_t i = 0; i < px.size(); ++i)
-        out[i] = png_uint_16(std::lround(std::clamp(double(px[i]), 0.0, 1.0) * 65535.0));
-    png_image image{};
-    image.version = PNG_IMAGE_VERSION;
-    image.width = png_uint_32(img.width);
-    image.height = png_uint_32(img.height);
-    image.format = PNG_FORMAT_LINEAR_RGB_ALPHA;
-    if (!png_image_write_to_file(&image, path.c_str(), 0, out.data(), 0, nullptr)) {
-        error = "cannot write " + path + ": " + image.message;
-        return false;
-    }
-    return true;
-}
-
-bool writeExr(const std::string& path, const Image& img, std::string& error) {
-    std::vector<float> px;
-    if (!floatPixels(img, "writeExr", px, error)) return false;
-    const char* err = nullptr;
-    if (SaveEXR(px.data(), img.width, img.height, 4, 0, path.c_str(), &err) < 0) {
-        error = "cannot write " + path + (err ? std::string(": ") + err : std::string());
-        if (err) FreeEXRErrorMessage(err);
-        return false;
-    }
-    return true;
 }
 
 bool writeImage(const std::string& path, const Image& img, std::string& error) {

@@ -2,7 +2,6 @@
 // glman passed them to glTexImage2D/3D, so the first row is the bottom one.
 #include "image/image.h"
 
-#include <bit>
 #include <cstring>
 #include <string>
 
@@ -18,7 +17,13 @@ std::int32_t rdI32(const std::uint8_t* p) {
                         (std::uint32_t(p[3]) << 24));
 }
 
-float rdF32(const std::uint8_t* p) { return std::bit_cast<float>(std::uint32_t(rdI32(p))); }
+// memcpy, not std::bit_cast: Emscripten 3.1.6's libc++ has no bit_cast.
+float rdF32(const std::uint8_t* p) {
+    std::uint32_t bits = std::uint32_t(rdI32(p));
+    float f;
+    std::memcpy(&f, &bits, sizeof f);
+    return f;
+}
 
 enum class Layout { Bytes, Floats, Bad };
 

@@ -20,6 +20,11 @@ namespace {
 std::string lastOutput;
 }
 
+namespace glimmer_web {
+// web_render.cpp reports through the same glimmer_last_output.
+void setLastOutput(std::string text) { lastOutput = std::move(text); }
+}  // namespace glimmer_web
+
 extern "C" {
 
 EMSCRIPTEN_KEEPALIVE int glimmer_check(const char* path) {

@@ -4,11 +4,8 @@
 // (gl/builtin_feed.h), and draws the same pixels as its compatibility-profile
 // twin fed by the fixed-function state: a lit, textured-coordinate sphere
 // under a perspective, moved by the script's transforms, in a colour.
-#include <fstream>
-
 #include <gtest/gtest.h>
 
-#include "common/test_folder.h"
 #include "render_harness.h"
 
 using namespace glimmer;
@@ -16,87 +13,13 @@ using namespace glimmer::testing;
 
 namespace {
 
-// The scene, its two programs differing only in how they name the built-ins.
-const char* kScript =
-    "Perspective 60\nLookAt 0 0 4  0 0 0  0 1 0\nBackground .1 .1 .2\nClear\n"
-    "Vertex lit.vert\nFragment lit.frag\nProgram Lit\n"
-    "Color 1 .6 .2\nTranslate -.8 .2 0\nRotate 30  1 1 0\nSphere 1 40 30\n"
-    "Color .2 .8 1\nTranslate 1.6 -.6 -.5\nScale .6\nTorus .3 .8 30 30\n";
-
-const char* kCompatVertex = R"(#version 330 compatibility
-out vec3 vN;
-out vec3 vE;
-out vec2 vST;
-out vec4 vColor;
-void main() {
-    vN = normalize(gl_NormalMatrix * gl_Normal);
-    vec4 eye = gl_ModelViewMatrix * gl_Vertex;
-    vE = -eye.xyz;
-    vST = gl_MultiTexCoord0.st;
-    vColor = gl_Color;
-    vec4 back = gl_ModelViewMatrixInverse * eye;           // == gl_Vertex
-    gl_Position = gl_ProjectionMatrix * gl_ModelViewMatrix * back;
-}
-)";
-const char* kCompatFragment = R"(#version 330 compatibility
-in vec3 vN;
-in vec3 vE;
-in vec2 vST;
-in vec4 vColor;
-void main() {
-    vec3 n = normalize(vN);
-    float d = max(dot(n, normalize(vec3(1., 1., 1.))), 0.);
-    float stripe = step(.5, fract(vST.s * 8.)) * .3;
-    gl_FragColor = vec4(vColor.rgb * (.2 + .8 * d) + stripe, 1.);
-}
-)";
-// The same two shaders as the translation writes them for WebGL 2.
-const char* kFedVertex = R"(#version 300 es
-uniform mat3 glimmer_NormalMatrix;
-uniform mat4 glimmer_ModelViewMatrix;
-uniform mat4 glimmer_ProjectionMatrix;
-uniform mat4 glimmer_ModelViewMatrixInverse;
-in vec4 glimmer_Vertex;
-in vec3 glimmer_Normal;
-in vec4 glimmer_MultiTexCoord0;
-in vec4 glimmer_Color;
-out vec3 vN;
-out vec3 vE;
-out vec2 vST;
-out vec4 vColor;
-void main() {
-    vN = normalize(glimmer_NormalMatrix * glimmer_Normal);
-    vec4 eye = glimmer_ModelViewMatrix * glimmer_Vertex;
-    vE = -eye.xyz;
-    vST = glimmer_MultiTexCoord0.st;
-    vColor = glimmer_Color;
-    vec4 back = glimmer_ModelViewMatrixInverse * eye;
-    gl_Position = glimmer_ProjectionMatrix * glimmer_ModelViewMatrix * back;
-}
-)";
-const char* kFedFragment = R"(#version 300 es
-precision highp float;
-in vec3 vN;
-in vec3 vE;
-in vec2 vST;
-in vec4 vColor;
-out vec4 fragColor;
-void main() {
-    vec3 n = normalize(vN);
-    float d = max(dot(n, normalize(vec3(1., 1., 1.))), 0.);
-    float stripe = step(.5, fract(vST.s * 8.)) * .3;
-    fragColor = vec4(vColor.rgb * (.2 + .8 * d) + stripe, 1.);
-}
-)";
-
-Rendered renderWith(const std::string& backend, const char* vert, const char* frag) {
-    TestFolder dir("glimmer_builtin_feed_");
-    std::ofstream(dir.path / "lit.vert") << vert;
-    std::ofstream(dir.path / "lit.frag") << frag;
-    std::ofstream(dir.path / "s.glib") << kScript;
+// The scene (tests/data/web): lit_compat.glib with compatibility-profile
+// shaders, lit_es.glib with their GLSL ES twins; the page's test draws the
+// second in a browser.
+Rendered renderWith(const std::string& backend, const std::string& which) {
     PlanOptions options;
     options.width = options.height = 96;
-    return renderScript(backend, (dir.path / "s.glib").string(), {}, {}, options);
+    return renderScript(backend, std::string(GLIMMER_TEST_DATA) + "/web/lit_" + which + ".glib", {}, {}, options);
 }
 
 long litPixels(const Image& img) {
@@ -109,8 +32,8 @@ long litPixels(const Image& img) {
 TEST(BuiltinFeed, AFedProgramDrawsWhatTheFixedFunctionStateDraws) {
     for (const std::string& backend : testBackends()) {
         SCOPED_TRACE("backend " + backend);
-        Rendered compat = renderWith(backend, kCompatVertex, kCompatFragment);
-        Rendered fed = renderWith(backend, kFedVertex, kFedFragment);
+        Rendered compat = renderWith(backend, "compat");
+        Rendered fed = renderWith(backend, "es");
         ASSERT_TRUE(compat.ok) << compat.error;
         ASSERT_TRUE(fed.ok) << fed.error;
         // Not an empty picture twice: both objects are there.
@@ -126,8 +49,8 @@ TEST(BuiltinFeed, AFedProgramDrawsWhatTheFixedFunctionStateDraws) {
 // fed program draws the same picture as the compatibility one on the
 // desktop.
 TEST(BuiltinFeed, OnOpenGlEsTheFedProgramDrawsTheDesktopsPicture) {
-    Rendered compat = renderWith("osmesa", kCompatVertex, kCompatFragment);
-    Rendered es = renderWith("egl-gles", kFedVertex, kFedFragment);
+    Rendered compat = renderWith("osmesa", "compat");
+    Rendered es = renderWith("egl-gles", "es");
     ASSERT_TRUE(compat.ok) << compat.error;
     ASSERT_TRUE(es.ok) << es.error;
     EXPECT_GT(litPixels(es.screen), 96 * 96 / 10);
@@ -141,7 +64,7 @@ TEST(BuiltinFeed, OnOpenGlEsTheFedProgramDrawsTheDesktopsPicture) {
 TEST(BuiltinFeed, TheColourIsOneValueForTheWholeDraw) {
     for (const std::string& backend : testBackends()) {
         SCOPED_TRACE("backend " + backend);
-        Rendered fed = renderWith(backend, kFedVertex, kFedFragment);
+        Rendered fed = renderWith(backend, "es");
         ASSERT_TRUE(fed.ok) << fed.error;
         // The sphere's centre, lit from the upper right: orange (r > g > b);
         // the torus, lower right: blue-cyan (b > r).

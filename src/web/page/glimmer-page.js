@@ -1,41 +1,214 @@
-// The page's side of src/web/web_check.cpp: lists the lesson's scripts,
-// checks the chosen one, shows the diagnostics as the desktop prints them.
-// A test (tests/web) opens the page with ?check=PATH and reads the result
-// from the DOM: data-exit on #verdict and the text of #diagnostics.
+// The page's side of src/web/web_check.cpp and web_render.cpp: lists the
+// lesson's scripts, checks or draws the chosen one, shows the diagnostics
+// as the desktop prints them.
+//
+// Two folders in the module's file system:
+//   /lesson  the bundled scripts, shaders and textures (embedded at build)
+//   /user    the user's own: a folder picked or dropped on the page, or the
+//            files of a lesson script loaded with ?lesson=FILE.js (what
+//            tools/render-web.sh and a packed lesson use); see mountUser.
+// A script runs with its folder's root as the working directory, so its
+// diagnostics name files as the desktop does when run from that root.
+//
+// The tests (tools/test-web.sh) open the page with ?check=PATH or
+// ?render=PATH[&size=WxH][&set=NAME=VALUE;...] (PATH under /lesson, or
+// under /user with ?lesson=) and read the result from the DOM: data-exit
+// on #verdict, the text of #diagnostics, and for a render the picture as a
+// PNG data URL in data-png on #picture. ?frames=N times N more frames of
+// it (data-frame-ms on #picture); data-first-picture-ms on the body is the
+// time from the start of loading to the first picture.
 "use strict";
-createGlimmer().then((glimmer) => {
+// What a user's folder may hold: checked before anything is written into
+// the module's memory (a dropped folder may be anything).
+const kMaxUserFiles = 2000;
+const kMaxUserBytes = 256 * 1024 * 1024;
+
+// A lesson script (?lesson=FILE.js) sets globalThis.glimmerLesson to
+// { files: { "relative/path": "base64", ... } } before the module starts.
+const loadLessonScript = (url) => new Promise((resolve, reject) => {
+  const tag = document.createElement("script");
+  tag.src = url;
+  tag.onload = () => resolve(globalThis.glimmerLesson || { files: {} });
+  tag.onerror = () => reject(new Error("cannot load the lesson " + url));
+  document.head.appendChild(tag);
+});
+
+const base64Bytes = (text) => Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
+
+const query = new URLSearchParams(location.search);
+const lessonUrl = query.get("lesson");
+Promise.all([createGlimmer(), lessonUrl ? loadLessonScript(lessonUrl) : null]).then(([glimmer, lesson]) => {
+  const FS = glimmer.FS;
   const check = glimmer.cwrap("glimmer_check", "number", ["string"]);
+  const render = glimmer.cwrap("glimmer_render", "number", ["string", "number", "number", "string"]);
   const output = glimmer.cwrap("glimmer_last_output", "string", []);
   const select = document.getElementById("script");
   const verdict = document.getElementById("verdict");
   const shown = document.getElementById("diagnostics");
+  const canvas = document.getElementById("canvas");
+  const picture = document.getElementById("picture");
 
-  // Every .glib under /lesson, as "scripts/bloom.glib".
-  const scripts = [];
-  const walk = (dir) => {
-    for (const name of glimmer.FS.readdir(dir)) {
-      if (name === "." || name === "..") continue;
-      const path = dir + "/" + name;
-      if (glimmer.FS.isDir(glimmer.FS.stat(path).mode)) walk(path);
-      else if (name.endsWith(".glib")) scripts.push(path.slice("/lesson/".length));
-    }
+  // Every .glib under a root, as its path below it ("scripts/bloom.glib").
+  const scriptsUnder = (root) => {
+    const found = [];
+    const walk = (dir) => {
+      for (const name of FS.readdir(dir)) {
+        if (name === "." || name === "..") continue;
+        const path = dir + "/" + name;
+        if (FS.isDir(FS.stat(path).mode)) walk(path);
+        else if (name.endsWith(".glib")) found.push(path.slice(root.length + 1));
+      }
+    };
+    walk(root);
+    return found.sort();
   };
-  walk("/lesson");
-  scripts.sort();
-  for (const s of scripts) select.add(new Option(s, s));
+  // The select's values are "ROOT:PATH"; the user's scripts come first.
+  const listScripts = () => {
+    select.length = 0;
+    for (const root of ["/user", "/lesson"])
+      for (const s of scriptsUnder(root)) select.add(new Option((root === "/user" ? "yours: " : "") + s, root + ":" + s));
+  };
 
-  const run = (path) => {
-    // The paths in diagnostics are relative to the lesson, as on the desktop
-    // when run from the repository root.
-    glimmer.FS.chdir("/lesson");
-    const exit = check(path);
+  // Replaces /user with `files`: [relativePath, Uint8Array] pairs. A path
+  // that would leave /user ("..", absolute) is refused, as are more files
+  // or bytes than the bounds above; the reason goes to the verdict.
+  const mountUser = (files) => {
+    let bytes = 0;
+    for (const [path, data] of files) {
+      bytes += data.length;
+      if (path.split("/").some((part) => part === ".." || part === "") )
+        return "refused: the path " + JSON.stringify(path) + " leaves the folder";
+    }
+    if (files.length > kMaxUserFiles) return "refused: more than " + kMaxUserFiles + " files";
+    if (bytes > kMaxUserBytes) return "refused: more than " + kMaxUserBytes / (1024 * 1024) + " MiB";
+    const clear = (dir) => {
+      for (const name of FS.readdir(dir)) {
+        if (name === "." || name === "..") continue;
+        const path = dir + "/" + name;
+        if (FS.isDir(FS.stat(path).mode)) { clear(path); FS.rmdir(path); } else FS.unlink(path);
+      }
+    };
+    clear("/user");
+    for (const [path, data] of files) {
+      const parts = path.split("/");
+      let dir = "/user";
+      for (const part of parts.slice(0, -1)) {
+        dir += "/" + part;
+        if (!FS.analyzePath(dir).exists) FS.mkdir(dir);
+      }
+      FS.writeFile("/user/" + path, data);
+    }
+    listScripts();
+    return "";
+  };
+  FS.mkdir("/user");
+
+  const report = (path, exit, what) => {
     verdict.dataset.exit = String(exit);
     verdict.className = exit === 0 ? "ok" : "bad";
-    verdict.textContent = exit === 0 ? path + ": no errors" : exit === 1 ? path + ": errors" : path + ": cannot be read";
+    verdict.textContent = path + ": " + (exit === 0 ? what : exit === 1 ? "errors" : "not run (usage: an unreadable script or a bad value)");
     shown.textContent = output();
   };
-  document.getElementById("check").onclick = () => run(select.value);
-  const asked = new URLSearchParams(location.search).get("check");
-  if (asked) { select.value = asked; run(asked); }
+  const refuse = (why) => {
+    verdict.dataset.exit = "2";
+    verdict.className = "bad";
+    verdict.textContent = why;
+    shown.textContent = "";
+  };
+  // "ROOT:PATH" or a bare PATH (under /user when a lesson was loaded, else
+  // under /lesson) -> [root, path]; the script runs from its root.
+  const locate = (value) => {
+    const at = value.indexOf(":");
+    if (at > 0 && value.startsWith("/")) return [value.slice(0, at), value.slice(at + 1)];
+    return [lesson ? "/user" : "/lesson", value];
+  };
+  const runCheck = (value) => {
+    const [root, path] = locate(value);
+    FS.chdir(root);
+    report(path, check(path), "no errors");
+  };
+  // The picture glimmer_render kept, as a PNG (the canvas shows the same).
+  const keepPicture = () => {
+    const w = glimmer._glimmer_pixels_width(), h = glimmer._glimmer_pixels_height();
+    const at = glimmer._glimmer_pixels();
+    const copy = document.createElement("canvas");
+    copy.width = w; copy.height = h;
+    const ctx = copy.getContext("2d");
+    const img = ctx.createImageData(w, h);
+    img.data.set(glimmer.HEAPU8.subarray(at, at + w * h * 4));
+    ctx.putImageData(img, 0, 0);
+    picture.dataset.png = copy.toDataURL("image/png");
+  };
+  const runRender = (value, width, height, sets) => {
+    const [root, path] = locate(value);
+    FS.chdir(root);
+    canvas.width = width || 512;
+    canvas.height = height || 512;
+    const exit = render(path, width, height, sets);
+    report(path, exit, "drawn");
+    if (exit === 0) {
+      keepPicture();
+      // Since the page began to load: what a user waits for the first picture.
+      if (!document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
+    }
+    return exit;
+  };
+  document.getElementById("check").onclick = () => runCheck(select.value);
+  document.getElementById("draw").onclick = () => runRender(select.value, 512, 512, "");
+
+  // A folder picked or dropped: its files, their paths below the folder.
+  const takeFiles = async (entries) => {
+    const files = [];
+    for (const [path, file] of entries) {
+      if (files.length > kMaxUserFiles) break;
+      files.push([path, new Uint8Array(await file.arrayBuffer())]);
+    }
+    const why = mountUser(files);
+    if (why) refuse(why);
+    else if (select.length) { select.selectedIndex = 0; runRender(select.value, 512, 512, ""); }
+  };
+  // webkitRelativePath is "folder/sub/file": the picked folder's own name goes.
+  document.getElementById("folder").onchange = (e) =>
+    takeFiles([...e.target.files].map((f) => [f.webkitRelativePath.split("/").slice(1).join("/"), f]));
+  const readEntry = (entry, prefix, out) => new Promise((resolve) => {
+    if (entry.isFile) entry.file((f) => { out.push([prefix + entry.name, f]); resolve(); }, resolve);
+    else {
+      const reader = entry.createReader();
+      const more = () => reader.readEntries(async (list) => {
+        if (!list.length) return resolve();
+        for (const child of list) await readEntry(child, prefix + entry.name + "/", out);
+        more();
+      }, resolve);
+      more();
+    }
+  });
+  document.body.ondragover = (e) => e.preventDefault();
+  document.body.ondrop = async (e) => {
+    e.preventDefault();
+    const out = [];
+    for (const item of e.dataTransfer.items) {
+      const entry = item.webkitGetAsEntry && item.webkitGetAsEntry();
+      if (entry) await readEntry(entry, "", out);
+    }
+    // One dropped folder: paths below it, as with the picker.
+    const top = new Set(out.map(([p]) => p.split("/")[0]));
+    const strip = top.size === 1 && out.every(([p]) => p.includes("/"));
+    takeFiles(out.map(([p, f]) => [strip ? p.slice(p.indexOf("/") + 1) : p, f]));
+  };
+
+  if (lesson) {
+    const why = mountUser(Object.entries(lesson.files).map(([p, b]) => [p, base64Bytes(b)]));
+    if (why) refuse(why);
+  } else {
+    listScripts();
+  }
+  if (query.get("check")) runCheck(query.get("check"));
+  if (query.get("render")) {
+    const [w, h] = (query.get("size") || "512x512").split("x").map(Number);
+    const exit = runRender(query.get("render"), w, h, query.get("set") || "");
+    // ?frames=N: N more frames timed (PERFORMANCE.md's page-against-render figure).
+    const frames = Number(query.get("frames") || 0);
+    if (exit === 0 && frames > 0) picture.dataset.frameMs = glimmer._glimmer_time_frames(frames).toFixed(3);
+  }
   document.body.dataset.ready = "1";
 });

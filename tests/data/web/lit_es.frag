@@ -1,0 +1,14 @@
+#version 300 es
+precision highp float;
+in vec3 vN;
+in vec3 vE;
+in vec2 vST;
+uniform float uStripes;  // stripes around the objects
+in vec4 vColor;
+out vec4 fragColor;
+void main() {
+    vec3 n = normalize(vN);
+    float d = max(dot(n, normalize(vec3(1., 1., 1.))), 0.);
+    float stripe = step(.5, fract(vST.s * uStripes)) * .3;
+    fragColor = vec4(vColor.rgb * (.2 + .8 * d) + stripe, 1.);
+}

@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# Renders a script through the browser page, headless, to a PNG: the page's
+# counterpart of `glimmer render`, so any script can be compared web against
+# desktop (tools/test-web.sh uses it).
+#   tools/render-web.sh SCRIPT -o OUT.png [--size WxH] [--set NAME=VALUE]...
+# The script's folder goes to the page as a lesson (?lesson=): every file
+# below the script's folder, and the sibling shaders/ and textures/ folders
+# where they exist (the places Glimmer looks for a script's files,
+# src/plan/resolve.cpp), at most 64 MiB. The page draws it with WebGL 2 in
+# Chromium's SwiftShader; its diagnostics go to stderr as render prints
+# them; the exit status is render's (0 drawn, 1 script errors, 2 usage).
+# WEB_BUILD (default build-web) is the web build, made when missing.
+set -uo pipefail
+here="$(cd "$(dirname "$0")/.." && pwd)"
+usage() { echo "usage: tools/render-web.sh SCRIPT -o OUT.png [--size WxH] [--set NAME=VALUE]..." >&2; exit 2; }
+script="" out="" size="512x512" sets=""
+while [ $# -gt 0 ]; do
+  case "$1" in
+    -o) out="${2:-}"; shift 2 || usage ;;
+    --size) size="${2:-}"; shift 2 || usage ;;
+    --set) sets="${sets:+$sets;}${2:-}"; shift 2 || usage ;;
+    -*) usage ;;
+    *) [ -z "$script" ] || usage; script="$1"; shift ;;
+  esac
+done
+[ -n "$script" ] && [ -n "$out" ] || usage
+[[ "$size" =~ ^[0-9]+x[0-9]+$ ]] || { echo "render-web: --size takes WxH, not '$size'" >&2; exit 2; }
+[ -f "$script" ] || { echo "render-web: $script: no such file" >&2; exit 2; }
+web="${WEB_BUILD:-$here/build-web}"
+[ -f "$web/src/web/glimmer-web.js" ] || (cd "$here" && tools/build-web.sh "$web" >/dev/null) ||
+  { echo "render-web: the web build failed (tools/build-web.sh $web)" >&2; exit 1; }
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+# The lesson: a script tag setting globalThis.glimmerLesson, read from disk
+# by the page (file:// allows script tags where it refuses fetch). Prints
+# the script's path below the lesson's root.
+inner="$(python3 - "$script" "$work/lesson.js" <<'EOF'
+import base64, json, os, sys
+script, target = os.path.abspath(sys.argv[1]), sys.argv[2]
+folder = os.path.dirname(script)
+parent = os.path.dirname(folder)
+siblings = [os.path.join(parent, d) for d in ("shaders", "textures") if os.path.isdir(os.path.join(parent, d))]
+root = parent if siblings else folder
+files, total, limit = {}, 0, 64 * 1024 * 1024
+for top in [folder] + siblings:
+    for dirpath, dirnames, filenames in os.walk(top):
+        dirnames[:] = sorted(d for d in dirnames if not d.startswith("."))
+        for name in sorted(filenames):
+            path = os.path.join(dirpath, name)
+            if name.startswith(".") or not os.path.isfile(path) or os.path.islink(path):
+                continue
+            total += os.path.getsize(path)
+            if total > limit:
+                sys.exit(f"render-web: the script's folders hold more than {limit >> 20} MiB")
+            with open(path, "rb") as f:
+                files[os.path.relpath(path, root)] = base64.b64encode(f.read()).decode()
+with open(target, "w") as f:
+    f.write("globalThis.glimmerLesson = " + json.dumps({"files": files}) + ";\n")
+print(os.path.relpath(script, root))
+EOF
+)" || exit 2
+page="$(realpath "$web")/src/web/index.html"
+# Query values are URL-encoded (a --set value may hold '&' or '=').
+url="$(python3 -c 'import sys, urllib.parse as u; print("file://" + sys.argv[1] + "?" + u.urlencode({"lesson": "file://" + sys.argv[2], "render": sys.argv[3], "size": sys.argv[4], "set": sys.argv[5]}))' \
+  "$page" "$work/lesson.js" "$inner" "$size" "$sets")"
+timeout 120 chromium --headless=new --no-sandbox --user-data-dir="$work/profile" --use-angle=swiftshader \
+  --enable-unsafe-swiftshader --allow-file-access-from-files --virtual-time-budget=30000 \
+  --dump-dom "$url" 2>/dev/null > "$work/dom.html"
+python3 - "$work/dom.html" "$out" <<'EOF'
+import base64, html, re, sys
+dom = open(sys.argv[1], encoding="utf-8", errors="replace").read()
+exit_ = re.search(r'id="verdict"[^>]*data-exit="(\d+)"', dom) or re.search(r'data-exit="(\d+)"[^>]*id="verdict"', dom)
+diag = re.search(r'<pre id="diagnostics">(.*?)</pre>', dom, re.S)
+if diag:
+    sys.stderr.write(html.unescape(diag.group(1)))
+if not exit_:
+    sys.stderr.write("render-web: the page gave no result (did the module load?)\n")
+    sys.exit(1)
+png = re.search(r'data-png="data:image/png;base64,([^"]*)"', dom)
+if exit_.group(1) == "0" and png:
+    with open(sys.argv[2], "wb") as f:
+        f.write(base64.b64decode(png.group(1)))
+    print(f"wrote {sys.argv[2]}")
+sys.exit(int(exit_.group(1)))
+EOF
