@@ -3,6 +3,9 @@
 # counterpart of `glimmer render`, so any script can be compared web against
 # desktop (tools/test-web.sh uses it).
 #   tools/render-web.sh SCRIPT -o OUT.png [--size WxH] [--set NAME=VALUE]...
+#   tools/render-web.sh SCRIPT --frames N [--size WxH] [--set ...]
+#       instead of a PNG, the page's figures in real time as JSON (time to
+#       the first picture, mean ms of N more frames; tools/page-figures.mjs)
 # The script's folder goes to the page as a lesson (?lesson=): every file
 # below the script's folder, and the sibling shaders/ and textures/ folders
 # where they exist (the places Glimmer looks for a script's files,
@@ -13,17 +16,19 @@
 set -uo pipefail
 here="$(cd "$(dirname "$0")/.." && pwd)"
 usage() { echo "usage: tools/render-web.sh SCRIPT -o OUT.png [--size WxH] [--set NAME=VALUE]..." >&2; exit 2; }
-script="" out="" size="512x512" sets=""
+script="" out="" size="512x512" sets="" frames=""
 while [ $# -gt 0 ]; do
   case "$1" in
     -o) out="${2:-}"; shift 2 || usage ;;
     --size) size="${2:-}"; shift 2 || usage ;;
     --set) sets="${sets:+$sets;}${2:-}"; shift 2 || usage ;;
+    --frames) frames="${2:-}"; shift 2 || usage ;;
     -*) usage ;;
     *) [ -z "$script" ] || usage; script="$1"; shift ;;
   esac
 done
-[ -n "$script" ] && [ -n "$out" ] || usage
+[ -n "$script" ] && { [ -n "$out" ] || [ -n "$frames" ]; } || usage
+[ -z "$frames" ] || [[ "$frames" =~ ^[1-9][0-9]{0,4}$ ]] || { echo "render-web: --frames takes 1 to 99999" >&2; exit 2; }
 [[ "$size" =~ ^[0-9]+x[0-9]+$ ]] || { echo "render-web: --size takes WxH, not '$size'" >&2; exit 2; }
 [ -f "$script" ] || { echo "render-web: $script: no such file" >&2; exit 2; }
 web="${WEB_BUILD:-$here/build-web}"
@@ -61,8 +66,12 @@ EOF
 )" || exit 2
 page="$(realpath "$web")/src/web/index.html"
 # Query values are URL-encoded (a --set value may hold '&' or '=').
-url="$(python3 -c 'import sys, urllib.parse as u; print("file://" + sys.argv[1] + "?" + u.urlencode({"lesson": "file://" + sys.argv[2], "render": sys.argv[3], "size": sys.argv[4], "set": sys.argv[5]}))' \
-  "$page" "$work/lesson.js" "$inner" "$size" "$sets")"
+url="$(python3 -c 'import sys, urllib.parse as u; print("file://" + sys.argv[1] + "?" + u.urlencode({"lesson": "file://" + sys.argv[2], "render": sys.argv[3], "size": sys.argv[4], "set": sys.argv[5], "frames": sys.argv[6]}))' \
+  "$page" "$work/lesson.js" "$inner" "$size" "$sets" "${frames:-0}")"
+if [ -n "$frames" ]; then
+  node --experimental-websocket "$here/tools/page-figures.mjs" "$url"
+  exit
+fi
 timeout 120 chromium --headless=new --no-sandbox --user-data-dir="$work/profile" --use-angle=swiftshader \
   --enable-unsafe-swiftshader --allow-file-access-from-files --virtual-time-budget=30000 \
   --dump-dom "$url" 2>/dev/null > "$work/dom.html"
