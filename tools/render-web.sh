@@ -6,10 +6,8 @@
 #   tools/render-web.sh SCRIPT --frames N [--size WxH] [--set ...]
 #       instead of a PNG, the page's figures in real time as JSON (time to
 #       the first picture, mean ms of N more frames; tools/page-figures.mjs)
-# The script's folder goes to the page as a lesson (?lesson=): every file
-# below the script's folder, and the sibling shaders/ and textures/ folders
-# where they exist (the places Glimmer looks for a script's files,
-# src/plan/resolve.cpp), at most 64 MiB. The page draws it with WebGL 2 in
+# The script's folder goes to the page as a lesson (?lesson=; see
+# tools/web_lesson.py for what it holds). The page draws it with WebGL 2 in
 # Chromium's SwiftShader; its diagnostics go to stderr as render prints
 # them; the exit status is render's (0 drawn, 1 script errors, 2 usage).
 # WEB_BUILD (default build-web) is the web build, made when missing.
@@ -36,34 +34,9 @@ web="${WEB_BUILD:-$here/build-web}"
   { echo "render-web: the web build failed (tools/build-web.sh $web)" >&2; exit 1; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-# The lesson: a script tag setting globalThis.glimmerLesson, read from disk
-# by the page (file:// allows script tags where it refuses fetch). Prints
-# the script's path below the lesson's root.
-inner="$(python3 - "$script" "$work/lesson.js" <<'EOF'
-import base64, json, os, sys
-script, target = os.path.abspath(sys.argv[1]), sys.argv[2]
-folder = os.path.dirname(script)
-parent = os.path.dirname(folder)
-siblings = [os.path.join(parent, d) for d in ("shaders", "textures") if os.path.isdir(os.path.join(parent, d))]
-root = parent if siblings else folder
-files, total, limit = {}, 0, 64 * 1024 * 1024
-for top in [folder] + siblings:
-    for dirpath, dirnames, filenames in os.walk(top):
-        dirnames[:] = sorted(d for d in dirnames if not d.startswith("."))
-        for name in sorted(filenames):
-            path = os.path.join(dirpath, name)
-            if name.startswith(".") or not os.path.isfile(path) or os.path.islink(path):
-                continue
-            total += os.path.getsize(path)
-            if total > limit:
-                sys.exit(f"render-web: the script's folders hold more than {limit >> 20} MiB")
-            with open(path, "rb") as f:
-                files[os.path.relpath(path, root)] = base64.b64encode(f.read()).decode()
-with open(target, "w") as f:
-    f.write("globalThis.glimmerLesson = " + json.dumps({"files": files}) + ";\n")
-print(os.path.relpath(script, root))
-EOF
-)" || exit 2
+# The lesson (tools/web_lesson.py): the files the script can reach, as a
+# script tag the page loads from disk; prints the script's path inside it.
+inner="$(python3 "$here/tools/web_lesson.py" for-script "$script" "$work/lesson.js")" || exit 2
 page="$(realpath "$web")/src/web/index.html"
 # Query values are URL-encoded (a --set value may hold '&' or '=').
 url="$(python3 -c 'import sys, urllib.parse as u; print("file://" + sys.argv[1] + "?" + u.urlencode({"lesson": "file://" + sys.argv[2], "render": sys.argv[3], "size": sys.argv[4], "set": sys.argv[5], "frames": sys.argv[6]}))' \

@@ -96,6 +96,26 @@ else
   echo "DIFFERS: uStripes=3 did not change the page's picture"
 fi
 
+# A lesson packed into one HTML file opens from disk with no server and no
+# file-access flag, and draws its script as render does.
+mkdir "$pictures/lesson"
+cp tests/data/web/lit_es.* "$pictures/lesson/"
+python3 tools/web_lesson.py pack "$pictures/lesson" "$web/src/web" --html "$pictures/lesson.html" >/dev/null
+timeout 60 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
+  --enable-unsafe-swiftshader --virtual-time-budget=10000 --dump-dom "file://$pictures/lesson.html" 2>/dev/null |
+  python3 -c '
+import base64, re, sys
+m = re.search(r"data-png=\"data:image/png;base64,([^\"]*)\"", sys.stdin.read())
+sys.stdout.buffer.write(base64.b64decode(m.group(1)) if m else b"")' > "$pictures/packed.png"
+"$g" -q render "$pictures/lesson/lit_es.glib" --size 512x512 -o "$pictures/packed_desktop.png"
+echo "  a packed lesson, opened from disk, against render"
+if [ -s "$pictures/packed.png" ] && same_picture "$pictures/packed.png" "$pictures/packed_desktop.png"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: the packed lesson did not draw render's picture"
+fi
+
 # A lesson whose file would leave the page's /user folder is refused as a
 # whole, with the reason, and nothing is drawn.
 printf 'globalThis.glimmerLesson = {"files": {"a.glib": "", "../escape.glib": ""}};\n' > "$pictures/hostile.js"

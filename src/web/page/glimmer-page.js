@@ -35,9 +35,13 @@ const loadLessonScript = (url) => new Promise((resolve, reject) => {
 
 const base64Bytes = (text) => Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
 
+// A packed lesson (tools/web_lesson.py pack) carries its files and the
+// module's WebAssembly in the page itself: it opens from disk, no server.
 const query = new URLSearchParams(location.search);
 const lessonUrl = query.get("lesson");
-Promise.all([createGlimmer(), lessonUrl ? loadLessonScript(lessonUrl) : null]).then(([glimmer, lesson]) => {
+const packed = globalThis.glimmerLesson || null;
+const moduleOptions = globalThis.glimmerWasm ? { wasmBinary: base64Bytes(globalThis.glimmerWasm) } : {};
+Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUrl) : packed]).then(([glimmer, lesson]) => {
   const FS = glimmer.FS;
   const check = glimmer.cwrap("glimmer_check", "number", ["string"]);
   const render = glimmer.cwrap("glimmer_render", "number", ["string", "number", "number", "string"]);
@@ -202,6 +206,8 @@ Promise.all([createGlimmer(), lessonUrl ? loadLessonScript(lessonUrl) : null]).t
   } else {
     listScripts();
   }
+  // A lesson opened with no script named draws its first script.
+  if (lesson && !query.get("check") && !query.get("render") && select.length) runRender(select.value, 512, 512, "");
   if (query.get("check")) runCheck(query.get("check"));
   if (query.get("render")) {
     const [w, h] = (query.get("size") || "512x512").split("x").map(Number);
