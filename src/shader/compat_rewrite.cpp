@@ -32,6 +32,14 @@ constexpr std::string_view kFragData = "glimmer_FragData";
 // gl_FragData may be indexed with there.
 constexpr int kFragDataCount = 4;
 constexpr std::string_view kFtransform = "glimmer_ftransform";
+// The fixed-function varyings: gl_FrontColor written by the vertex stage is
+// gl_Color read by the fragment stage; gl_TexCoord[k] is one varying per
+// constant index (glimmer_TexCoord0, ...), so each stage declares only the
+// ones it uses and the two still match by name.
+constexpr std::string_view kFrontColor = "glimmer_FrontColor";
+constexpr std::string_view kTexCoord = "glimmer_TexCoord";
+// gl_MaxTextureCoords on Mesa and NVIDIA.
+constexpr int kTexCoordCount = 8;
 
 const CompatBuiltin* builtinNamed(std::string_view word) {
     for (const CompatBuiltin& b : kCompatBuiltins)
@@ -115,7 +123,8 @@ CompatRewrite rewriteCompatBuiltins(std::string_view s, CompatStage stage,
     const bool vertex = stage == CompatStage::Vertex;
 
     std::set<CompatFeed> used;
-    bool fragColor = false, fragData = false, ftransform = false;
+    std::set<int> texCoords;
+    bool fragColor = false, fragData = false, ftransform = false, frontColor = false;
     std::string body;
     body.reserve(s.size() + 64);
     auto rename = [&](std::string_view to, std::string_view userSpelling) {
@@ -185,6 +194,28 @@ CompatRewrite rewriteCompatBuiltins(std::string_view s, CompatStage stage,
                 continue;
             }
         }
+        if (word == "gl_TexCoord") {  // gl_TexCoord[k], k a literal: one varying per index
+            size_t open = skipBlanks(s, j), d = open + 1;
+            if (open < s.size() && s[open] == '[') {
+                d = skipBlanks(s, open + 1);
+                size_t e = d;
+                while (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) ++e;
+                size_t close = skipBlanks(s, e);
+                int k = e > d && e - d < 3 ? std::atoi(std::string(s.substr(d, e - d)).c_str()) : -1;
+                if (k >= 0 && k < kTexCoordCount && close < s.size() && s[close] == ']') {
+                    std::string name = std::string(kTexCoord) + std::to_string(k);
+                    rename(name, "gl_TexCoord");
+                    texCoords.insert(k);
+                    i = close + 1;
+                    continue;
+                }
+            }
+        }
+        if ((vertex && word == "gl_FrontColor") || (!vertex && word == "gl_Color")) {
+            rename(kFrontColor, spelled);
+            frontColor = true;
+            continue;
+        }
         if (const CompatBuiltin* b = builtinNamed(word); b && (vertex || !b->attribute)) {
             rename(b->name, spelled);
             used.insert(b->feed);
@@ -234,6 +265,16 @@ CompatRewrite rewriteCompatBuiltins(std::string_view s, CompatStage stage,
                     std::string(b.name) + ";\n";
         else head += "uniform " + std::string(b.glslType) + " " + std::string(b.name) + ";\n";
         r.declared.emplace_back(b.name);
+    }
+    // The fixed-function varyings: out of the vertex stage, into the fragment stage.
+    const std::string direction = vertex ? "out" : "in";
+    if (frontColor) {
+        head += direction + " vec4 " + std::string(kFrontColor) + ";\n";
+        r.declared.emplace_back(kFrontColor);
+    }
+    for (int k : texCoords) {
+        head += direction + " vec4 " + std::string(kTexCoord) + std::to_string(k) + ";\n";
+        r.declared.push_back(std::string(kTexCoord) + std::to_string(k));
     }
     if (fragColor) {
         head += "layout(location = 0) out vec4 " + std::string(kFragColor) + ";\n";

@@ -17,13 +17,16 @@
 //       gl_Point.size                -> glimmer_PointSize
 //       ftransform()                 -> glimmer_ftransform() (P * MV * vertex, declared)
 //       gl_FragColor / gl_FragData   -> glimmer_FragColor / glimmer_FragData[4] (fragment)
+//       gl_FrontColor (vertex), gl_Color (fragment) -> the varying glimmer_FrontColor
+//       gl_TexCoord[k], k a literal 0..7 -> the varying glimmer_TexCoordk
 //       texture2D, texture3D, textureCube[Lod|Proj...] -> texture, textureLod, textureProj...
 //       attribute                    -> in (vertex)
 //       varying                      -> out (vertex), in (fragment)
 //   - `aliases`: #define-style names that stand for built-ins (GSTAP's
 //     aVertex for gl_Vertex, ...): rewritten as the built-in they name.
-//   - Anything else of the compatibility profile (gl_TexCoord, gl_LightSource,
-//     ...) is left as written: the compiler then reports it at its line.
+//   - Anything else of the compatibility profile (gl_LightSource, gl_BackColor,
+//     gl_TexCoord[i] with i not a literal, ...) is left as written: the
+//     compiler then reports it at its line.
 #pragma once
 #include <map>
 #include <string>

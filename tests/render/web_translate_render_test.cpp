@@ -114,6 +114,22 @@ TEST(WebTranslateOnEs, ACompatibilityScriptDrawsTheDesktopsPicture) {
     EXPECT_GT(levels, 1) << "no stripes across the sphere";
 }
 
+// glman classroom scripts whose shaders pass the colour through
+// gl_FrontColor / gl_Color and use the built-ins (tests/data/glman), drawn
+// through the translation on OpenGL ES and as written on the desktop.
+class GlmanScriptOnEs : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(GlmanScriptOnEs, DrawsTheDesktopsPicture) {
+    PlanOptions options;
+    options.width = options.height = 96;
+    const std::string script = std::string(GLIMMER_TEST_DATA) + "/glman/" + GetParam() + ".glib";
+    expectSamePicture(renderScript("osmesa", script, {}, {}, options), renderScript("egl-gles", script, {}, {}, options), 96);
+}
+
+INSTANTIATE_TEST_SUITE_P(Scripts, GlmanScriptOnEs,
+                         ::testing::Values("cone_cylinder_disk", "quad_texture", "teapot", "texture3d", "cubemap_axes",
+                                           "uniform_forms"));
+
 // The seed bloom (scripts/bloom.glib, compatibility GLSL, two passes) on
 // OpenGL ES through the translation: the picture `--backend osmesa` draws.
 TEST(WebTranslateOnEs, TheSeedBloomDrawsTheDesktopsPicture) {

@@ -171,13 +171,33 @@ TEST(WebTranslate, AnUndeclaredNameIsReportedWhereItStands) {
     EXPECT_TRUE(has(r.diags.all().front().message, "'nothere'")) << r.printed();
 }
 
+// glman-era shaders pass the colour and texture coordinates through the
+// fixed-function varyings: gl_FrontColor out, gl_Color in; gl_TexCoord[k].
+TEST(WebTranslate, TheFixedFunctionVaryingsBecomeNamedVaryingsThatMatch) {
+    Result v = translate("#version 330 compatibility\nvoid main() {\n    gl_FrontColor = gl_Color;\n"
+                         "    gl_TexCoord[0] = gl_MultiTexCoord0;\n    gl_TexCoord[ 2 ] = vec4(1.);\n"
+                         "    gl_Position = ftransform();\n}\n",
+                         WebStage::Vertex);
+    Result f = translate("#version 330 compatibility\nvoid main() {\n    gl_FragColor = gl_Color * gl_TexCoord[0].s;\n}\n",
+                         WebStage::Fragment);
+    ASSERT_TRUE(v.t.ok) << v.printed();
+    ASSERT_TRUE(f.t.ok) << f.printed();
+    EXPECT_TRUE(has(v.t.text, "out vec4 glimmer_FrontColor;")) << v.t.text;
+    EXPECT_TRUE(has(v.t.text, "out vec4 glimmer_TexCoord0;")) << v.t.text;
+    EXPECT_TRUE(has(v.t.text, "out vec4 glimmer_TexCoord2;")) << v.t.text;
+    EXPECT_TRUE(has(v.t.text, "in vec4 glimmer_Color;")) << "the attribute stays the attribute:\n" << v.t.text;
+    EXPECT_TRUE(has(f.t.text, "in vec4 glimmer_FrontColor;")) << f.t.text;
+    EXPECT_TRUE(has(f.t.text, "in vec4 glimmer_TexCoord0;")) << f.t.text;
+    EXPECT_FALSE(has(f.t.text, "glimmer_TexCoord2")) << "only what the stage uses:\n" << f.t.text;
+}
+
 TEST(WebTranslate, ABuiltinWithNoStandInIsNamedAsSuch) {
-    const std::string text = "void main() {\n    gl_FragColor = gl_TexCoord[0];\n}\n";
+    const std::string text = "void main() {\n    gl_FragColor = gl_LightSource[0].diffuse;\n}\n";
     Result r = translate(text, WebStage::Fragment);
     EXPECT_FALSE(r.t.ok);
     ASSERT_GE(r.diags.errorCount(), 1);
     const Diagnostic& d = r.diags.all().front();
-    auto [line, col] = whereIs(text, "gl_TexCoord");
+    auto [line, col] = whereIs(text, "gl_LightSource");
     EXPECT_EQ(d.loc.line, line);
     EXPECT_EQ(d.loc.col, col);
     EXPECT_TRUE(has(d.message, "no stand-in")) << d.message;

@@ -1,12 +1,13 @@
 #version 120
+// The normal through a varying of the user's own; the colour and the
+// texture coordinates through the fixed-function varyings, as glman-era
+// shaders pass them.
 varying vec3 vN;
-varying vec2 vST;
-varying vec4 vColor;
 
 void main()
 {
     vN = normalize(gl_NormalMatrix * gl_Normal);
-    vST = gl_MultiTexCoord0.st;
-    vColor = gl_Color;
+    gl_TexCoord[0] = gl_MultiTexCoord0;
+    gl_FrontColor = gl_Color;
     gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
 }
