@@ -17,6 +17,8 @@ packages=(
   libwebp-dev                         # render --frames: animated WebP (WebPAnimEncoder/Decoder)
   fonts-dejavu-core                   # labels of sheets and charts (DejaVu Sans through stb_truetype)
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
+  glslang-dev glslang-tools           # the translation for WebGL 2: desktop GLSL -> SPIR-V (src/shader/web_translate.h)
+  libspirv-cross-c-shared-dev spirv-cross  # and SPIR-V -> GLSL ES 3.00 (its C++ libraries come with the -dev package)
 )
 test_packages=(
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server

@@ -1,12 +1,14 @@
 #include <iostream>
 
 #include "driver/session.h"
+#include "driver/web_check.h"
 
 namespace glimmer {
 
 // Everything `render` would do before drawing, for every program and texture
 // the script names, used or not.
-int runCheck(const CommonOptions& o) {
+int runCheck(const CheckOptions& o) {
+    if (o.web) return runWebCheck(o);
     Session s;
     if (auto code = openSession(o, {}, true, s)) return *code;
     return kExitOk;

@@ -18,13 +18,13 @@ void addTradeoffCommand(CLI::App& app, TradeoffOptions& options);
 int runTradeoff(const TradeoffOptions& options);
 void addSheetCommand(CLI::App& app, SheetOptions& options);
 int runSheet(const SheetOptions& options);
-void addCheckCommand(CLI::App& app, CommonOptions& options);
+void addCheckCommand(CLI::App& app, CheckOptions& options);
 struct ViewOptions;
 void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
 void addBatchCommand(CLI::App& app, BatchOptions& options);
 int runBatch(const BatchOptions& options);
-int runCheck(const CommonOptions& options);
+int runCheck(const CheckOptions& options);
 
 // --sandbox and --max-memory (app/safety_options.cpp).
 void addSafetyOptions(CLI::App* sub, CommonOptions& options);

@@ -24,7 +24,7 @@ int run(int argc, char** argv) {
     GlobalOptions globals;
     addGlobalOptions(app, globals);
     RenderOptions render;
-    CommonOptions check;
+    CheckOptions check;
     ViewOptions view;
     SheetOptions sheet;
     TradeoffOptions tradeoff;

@@ -40,9 +40,11 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
                                         "values above 65504");
 }
 
-void addCheckCommand(CLI::App& app, CommonOptions& o) {
+void addCheckCommand(CLI::App& app, CheckOptions& o) {
     CLI::App* sub = app.add_subcommand("check", "parse, load, compile and link a script; draw nothing");
     addCommon(sub, o);
+    sub->add_flag("--web", o.web, "instead, translate every shader to GLSL ES 3.00 for WebGL 2 (no OpenGL needed): "
+                                  "will the script run in the browser?");
 }
 
 void addViewCommand(CLI::App& app, ViewOptions& o) {

@@ -24,6 +24,11 @@ struct CommonOptions {
     double timeoutSeconds = 0;      // --timeout: the GL work runs in a child stopped after this (0: no limit)
 };
 
+// glimmer check: --web translates every shader for WebGL 2 instead of compiling on a context.
+struct CheckOptions : CommonOptions {
+    bool web = false;
+};
+
 struct RenderOptions : CommonOptions {
     std::string output = "out.png";
     std::vector<std::string> dumps;  // UNIT=file.png

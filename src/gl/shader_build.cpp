@@ -7,6 +7,7 @@
 
 #include <fmt/format.h>
 
+#include "shader/web_translate.h"
 
 namespace glimmer {
 
@@ -79,6 +80,17 @@ GLenum stageEnum(ShaderStage::Kind k) {
     return GL_VERTEX_SHADER;
 }
 
+WebStage webStage(ShaderStage::Kind k) {
+    switch (k) {
+    case ShaderStage::Kind::Vertex: return WebStage::Vertex;
+    case ShaderStage::Kind::Fragment: return WebStage::Fragment;
+    case ShaderStage::Kind::Geometry: return WebStage::Geometry;
+    case ShaderStage::Kind::TessControl: return WebStage::TessControl;
+    case ShaderStage::Kind::TessEvaluation: return WebStage::TessEvaluation;
+    }
+    return WebStage::Vertex;
+}
+
 std::string infoLog(const GlApi& gl, unsigned object, bool isProgram) {
     GLint length = 0;
     if (isProgram) gl.GetProgramiv(object, GL_INFO_LOG_LENGTH, &length);
@@ -106,7 +118,22 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
             continue;
         }
         const std::string& text = *stageTexts[k];
-        PreparedSource src = prepareSource(text, decl.gstap ? kGstapPrelude : "");
+        const char* prelude = decl.gstap ? kGstapPrelude : "";
+        // An OpenGL ES context (WebGL 2's level) compiles only GLSL ES: a
+        // desktop shader is translated first (shader/web_translate.h), its
+        // errors against the user's lines; GSTAP's aliases go with it.
+        std::string translated;
+        const bool viaTranslation = gl.es && !isGlslEs300(text);
+        if (viaTranslation) {
+            WebTranslation t = translateForWeb({text, webStage(stage.kind), stage.path, prelude}, diags);
+            if (!t.ok) {
+                ok = false;
+                continue;
+            }
+            translated = std::move(t.text);
+            prelude = "";
+        }
+        PreparedSource src = prepareSource(viaTranslation ? translated : text, prelude);
         unsigned sh = gl.CreateShader(stageEnum(stage.kind));
         const char* p = src.text.c_str();
         gl.ShaderSource(sh, 1, &p, nullptr);
@@ -114,7 +141,13 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
         GLint status = 0;
         gl.GetShaderiv(sh, GL_COMPILE_STATUS, &status);
         std::string log = infoLog(gl, sh, false);
-        if (!log.empty())
+        if (!log.empty() && viaTranslation) {
+            // The lines are the translation's, not the user's: the driver's
+            // word against the file, and only when it refuses (its warnings
+            // on generated text would point nowhere useful).
+            if (!status)
+                diags.error(stage.path, {}, "the OpenGL ES driver refused the translation for GLSL ES 3.00: " + log);
+        } else if (!log.empty())
             mapCompilerLog(log, src, stage.path, scriptFile, stage.loc, status ? Severity::Warning : Severity::Error, diags);
         if (!status) {
             if (log.empty()) diags.error(stage.path, {}, "the shader did not compile, and the driver said nothing");
