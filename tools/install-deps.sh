@@ -27,6 +27,7 @@ test_packages=(
   x11-apps                            # xwd: the viewer test reads the X screen back
   xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
   emscripten chromium                 # the browser build (src/web) and its headless test (tools/test-web.sh)
+  dpkg-dev                            # apt-get source: glslang and SPIRV-Cross for the browser build (src/web/third_party.cmake)
 )
 case "${1:-all}" in
   render) ;;
@@ -48,11 +49,27 @@ make_locale() {
     $SUDO locale-gen >/dev/null
   fi
 }
+# The browser build compiles glslang and SPIRV-Cross from Debian's source
+# packages (src/web/third_party.cmake): `apt-get source` needs a deb-src
+# entry, which Debian's images leave out.
+have_deb_src() {
+  grep -rqsE '^(Types:.*deb-src|deb-src )' /etc/apt/sources.list /etc/apt/sources.list.d/
+}
+add_deb_src() {
+  if [ "${1:-all}" = all ] && ! have_deb_src; then
+    printf '%s\n' 'Types: deb-src' 'URIs: http://deb.debian.org/debian' 'Suites: bookworm bookworm-updates' \
+      'Components: main' 'Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg' |
+      $SUDO tee /etc/apt/sources.list.d/glimmer-src.sources >/dev/null
+    $SUDO apt-get update -qq
+  fi
+}
 if [ -n "${have_all:-}" ]; then
   make_locale "${1:-all}"
+  add_deb_src "${1:-all}"
   exit 0
 fi
 export DEBIAN_FRONTEND=noninteractive
+add_deb_src "${1:-all}"
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
 make_locale "${1:-all}"

@@ -5,7 +5,10 @@
 // page's clocks stand still (a frame there measures 0 ms).
 //   node --experimental-websocket tools/page-figures.mjs URL
 // Used by tools/render-web.sh --frames; Node 20's WebSocket and fetch, no
-// package needed.
+// package needed. GLIMMER_PAGE_ANGLE picks ANGLE's back end: swiftshader
+// (default, no display needed) or gl (the system's OpenGL under an X
+// server, e.g. xvfb-run: Mesa's llvmpipe, the rasterizer `glimmer render`
+// uses, so a frame in the page and one of render compare like for like).
 import { spawn } from "node:child_process";
 import { mkdtempSync, readFileSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -17,10 +20,11 @@ if (!url) {
   process.exit(2);
 }
 const profile = mkdtempSync(join(tmpdir(), "glimmer-page-"));
+const angle = process.env.GLIMMER_PAGE_ANGLE || "swiftshader";
 const browser = spawn("chromium", [
-  "--headless=new", "--no-sandbox", `--user-data-dir=${profile}`, "--use-angle=swiftshader",
-  "--enable-unsafe-swiftshader", "--allow-file-access-from-files", "--remote-debugging-port=0",
-  "about:blank"], { stdio: "ignore" });
+  "--headless=new", "--no-sandbox", `--user-data-dir=${profile}`, `--use-angle=${angle}`,
+  "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist", "--allow-file-access-from-files",
+  "--remote-debugging-port=0", "about:blank"], { stdio: "ignore" });
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 const done = (code) => {
   browser.once("exit", () => { rmSync(profile, { recursive: true, force: true }); process.exit(code); });
@@ -59,7 +63,12 @@ while ((await evaluate("document.body && document.body.dataset.ready")) !== "1")
 const figures = await evaluate(`({
   exit: document.getElementById("verdict").dataset.exit,
   firstPictureMs: Number(document.body.dataset.firstPictureMs),
-  frameMs: Number(document.getElementById("picture").dataset.frameMs)
+  frameMs: Number(document.getElementById("picture").dataset.frameMs),
+  renderer: (() => {
+    const gl = document.createElement("canvas").getContext("webgl2");
+    const info = gl && gl.getExtension("WEBGL_debug_renderer_info");
+    return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : "unknown";
+  })()
 })`);
 // What the page loaded, uncompressed (from disk; a server's gzip is measured apart).
 figures.loadedBytes = [...transferred.values()].reduce((a, b) => a + b, 0);

@@ -4,10 +4,11 @@
 # - every bundled script checked in the page prints exactly the diagnostics
 #   and exit status that the desktop's `glimmer check` prints, and a missing
 #   script is refused the same way;
-# - a script drawn in the page (tests/data/web/lit_es.glib, GLSL ES shaders)
-#   is the picture `glimmer render` draws of it, within what two
-#   rasterizers may differ by, at its default and with a value set as
-#   --set sets it (and that value really changes the picture).
+# - a script drawn in the page is the picture `glimmer render` draws of it,
+#   within what two rasterizers may differ by: an ES scene at its default
+#   and with a value set as --set sets it (which must change the picture),
+#   the seed bloom and a compatibility scene through the page's translation;
+# - a packed lesson opens from disk; a hostile lesson is refused.
 # Builds the web module first (tools/build-web.sh).
 # Usage: tools/test-web.sh [DESKTOP_GLIMMER] [WEB_BUILD_DIR]
 #        (default build/src/app/glimmer, build-web)
@@ -74,8 +75,11 @@ sys.exit(0 if o <= n / 1000 and (p == 'inf' or float(p) >= 40) else 1)" "$over" 
 }
 pictures="$(mktemp -d)"
 trap 'rm -rf "$profile" "$pictures"' EXIT
-script=tests/data/web/lit_es.glib
-for sets in "" "uStripes=3"; do
+# An ES scene (drawn as written) and the seed bloom and a glman classroom
+# scene (desktop GLSL, translated in the page by glslang and SPIRV-Cross).
+for case in "tests/data/web/lit_es.glib|" "tests/data/web/lit_es.glib|uStripes=3" \
+            "scripts/bloom.glib|uAdd=2" "tests/data/web/compat_scene.glib|"; do
+  script="${case%%|*}" sets="${case#*|}"
   desk="$pictures/desktop.png" shot="$pictures/page.png"
   args=(); [ -n "$sets" ] && args=(--set "$sets")
   "$g" -q render "$script" --size 256x256 "${args[@]}" -o "$desk"
@@ -86,7 +90,7 @@ for sets in "" "uStripes=3"; do
     failed=$((failed + 1))
     echo "DIFFERS: $script drawn in the page ${sets:+with $sets }is not render's picture"
   fi
-  cp "$shot" "$pictures/page_${sets:-default}.png" 2>/dev/null || true
+  [ "$script" = tests/data/web/lit_es.glib ] && cp "$shot" "$pictures/page_${sets:-default}.png" 2>/dev/null
 done
 # The set value reached the picture: the two page pictures differ.
 if [ "$(compare -metric AE "$pictures/page_default.png" "$pictures/page_uStripes=3.png" null: 2>&1)" -gt 1000 ]; then
