@@ -83,6 +83,7 @@ private:
 
     // A shape made from numbers (geometry/shape_registry.h): checked, completed, drawn.
     void numberShape(const Command& c, const ShapeRule& rule);
+    void torusOrderCheck(const Command& c, const std::vector<double>& numbers);
 
     void noiseRes(const Command& c);
 

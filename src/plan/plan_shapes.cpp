@@ -39,7 +39,23 @@ void Builder::numberShape(const Command& c, const ShapeRule& rule) {
             }
     std::vector<double> written;
     for (const auto& a : c.args) written.push_back(a.number);
-    mesh(c, completeShapeNumbers(rule, written));
+    std::vector<double> numbers = completeShapeNumbers(rule, written);
+    if (rule.name == "Torus" || rule.name == "WireTorus") torusOrderCheck(c, numbers);
+    mesh(c, std::move(numbers));
+}
+
+// glman (like glutSolidTorus) reads the tube's radius first and the ring's
+// second; glman's manual names them the other way round on its Torus line,
+// so scripts exist in both orders. A tube wider than its ring is drawn as
+// written (a lump with no hole), but the student is told how it was read.
+void Builder::torusOrderCheck(const Command& c, const std::vector<double>& numbers) {
+    if (c.args.empty() || numbers[0] <= numbers[1]) return;
+    const std::string tube = c.args[0].text;
+    const std::string ring = c.args.size() > 1 ? c.args[1].text : fmt::format("{}", numbers[1]);
+    diags_.warning(file(), c.args[0].loc,
+                   fmt::format("{} read in glman's order (tube radius, then ring radius): a tube of radius {} around a "
+                               "ring of radius {}, which has no hole; for a ring write '{} {} {}'",
+                               c.spelled, tube, ring, c.spelled, ring, tube));
 }
 
 // One point from an `[x y z]` group (a 2-number group lies at z = 0).
