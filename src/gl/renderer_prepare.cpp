@@ -202,8 +202,8 @@ const char* kindPhrase(TextureDecl::Kind k) {
 
 void Renderer::warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& diags) {
     // Each sampler's unit as the script set it (unset: unit 0). The unit
-    // holds, for each draw, the texture bound there last; its other targets
-    // are emptied (drawStep), so a sampler of another kind reads black.
+    // holds, for each draw, the texture of each kind bound there last (one
+    // per OpenGL target); a sampler of a kind the unit lacks reads black.
     std::set<std::tuple<int, std::string, int>> told;  // program, sampler, texture
     for (const auto& pass : plan.passes) {
         if (!pass.needed && !everything) continue;
@@ -230,7 +230,7 @@ void Renderer::warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& 
                 if (on == st.draw.units.end()) continue;
                 const TextureDecl& tex = plan.textures[size_t(on->second)];
                 TextureDecl::Kind reads{};
-                if (samplerTextureKind(u.type, reads) && reads == tex.kind) continue;
+                if (samplerTextureKind(u.type, reads) && st.draw.textureOn(unit, reads, plan.textures) >= 0) continue;
                 if (!told.insert({st.draw.program, u.name, on->second}).second) continue;
                 diags.warning(plan.scriptFile, decl.loc,
                               fmt::format("Program {}: {} {} reads unit {}, which holds {} (line {}); it reads black",

@@ -183,7 +183,9 @@ private:
     float lineWidth_ = 1.f, pointSize_ = 1.f;
     bool flat_ = false;
     bool gstap_ = false;
-    std::map<int, int> units_;
+    std::map<int, int> units_;  // unit -> the texture bound there last
+    // unit -> the texture bound there for each kind (OpenGL's one binding per target)
+    std::map<int, std::map<TextureDecl::Kind, int>> unitTargets_;
     TextureDecl::Wrap wrap_ = TextureDecl::Wrap::Repeat;  // Wrap in force for new textures
     std::map<ShaderStage::Kind, ShaderStage> stages_;
     int program_ = -1;

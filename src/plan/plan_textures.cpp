@@ -75,10 +75,12 @@ void Builder::bindTexture(int unit, TextureDecl t) {
             if (o.source == TextureDecl::Source::File && o.kind == t.kind && o.path == t.path &&
                 o.facePaths == t.facePaths && o.wrap == t.wrap && (!options_.standIns || o.faceShown == t.faceShown)) {
                 units_[unit] = int(i);
+                unitTargets_[unit][t.kind] = int(i);
                 return;
             }
         }
     }
+    unitTargets_[unit][t.kind] = int(plan_.textures.size());
     plan_.textures.push_back(std::move(t));
     units_[unit] = int(plan_.textures.size()) - 1;
 }
@@ -244,13 +246,18 @@ void Builder::renderToTexture(const Command& c) {
     for (const auto& a : c.args) {
         int unit = unitArg(c, a);
         if (unit < 0) return;
+        // The unit's 2-D texture, also when a cube map or volume was bound
+        // there after it (they sit on other targets of the unit).
         auto it = units_.find(unit);
         if (it == units_.end()) {
             diags_.error(file(), a.loc, fmt::format("no texture on unit {} to render into; "
                                                     "give it one first with Texture2D {} width height", unit, unit));
             return;
         }
-        const TextureDecl& t = plan_.textures[it->second];
+        int index = it->second;
+        const auto& kinds = unitTargets_[unit];
+        if (auto flat = kinds.find(TextureDecl::Kind::Tex2D); flat != kinds.end()) index = flat->second;
+        const TextureDecl& t = plan_.textures[size_t(index)];
         if (t.kind != TextureDecl::Kind::Tex2D) {
             diags_.error(file(), a.loc, fmt::format("unit {} holds a {}; render into an empty texture made with "
                                                     "Texture2D {} width height", unit,
@@ -271,7 +278,7 @@ void Builder::renderToTexture(const Command& c) {
                 return;
             }
         }
-        p.targets.push_back(it->second);
+        p.targets.push_back(index);
     }
     plan_.passes.push_back(std::move(p));
 }
