@@ -5,15 +5,15 @@
 namespace glimmer {
 
 void Diagnostics::error(const std::string& file, SourceLoc loc, std::string message) {
-    add({Severity::Error, file, loc, std::move(message)});
+    add({Severity::Error, file, loc, std::move(message), false});
 }
 
 void Diagnostics::warning(const std::string& file, SourceLoc loc, std::string message) {
-    add({Severity::Warning, file, loc, std::move(message)});
+    add({Severity::Warning, file, loc, std::move(message), false});
 }
 
 void Diagnostics::note(const std::string& file, SourceLoc loc, std::string message) {
-    add({Severity::Note, file, loc, std::move(message)});
+    add({Severity::Note, file, loc, std::move(message), false});
 }
 
 void Diagnostics::add(Diagnostic d) {

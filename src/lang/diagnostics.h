@@ -19,6 +19,10 @@ struct Diagnostic {
     std::string file;  // as the user named it (script path, shader path, ...)
     SourceLoc loc;
     std::string message;
+    // A line of the OpenGL driver's compile or link log (gl/compiler_log):
+    // its words are the driver's, and its later errors may only follow from
+    // an earlier one (driver/error_cascades.h).
+    bool fromDriver = false;
 };
 
 class Diagnostics {

@@ -188,6 +188,7 @@ private:
     std::map<int, std::map<TextureDecl::Kind, int>> unitTargets_;
     TextureDecl::Wrap wrap_ = TextureDecl::Wrap::Repeat;  // Wrap in force for new textures
     std::map<ShaderStage::Kind, ShaderStage> stages_;
+    std::set<ShaderStage::Kind> missingStages_;  // named, but the file was not found
     int program_ = -1;
     int patchVertices_ = 3;
     std::map<MeshDecl, int> meshIndex_;
