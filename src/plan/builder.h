@@ -112,7 +112,9 @@ private:
     // Resolves a file the script names, as glman would or, under --sandbox,
     // only inside the sandbox. `usable`: found, or a stand-in takes its place
     // (--stand-ins); false when the command cannot go on (reported).
-    std::string findFile(const Arg& a, const char* what, bool& usable);
+    // `standIn` says, for --stand-ins, what takes a missing file's place.
+    std::string findFile(const Arg& a, const char* what, bool& usable,
+                         const std::string& standIn = "a stand-in takes its place");
     // Counts a draw; false (reported once) past kMaxDraws.
     bool countDraw(SourceLoc loc);
     bool textureFile(const Arg& a, std::string& path);
@@ -142,7 +144,8 @@ private:
 
     void cubeMap(const Command& c);
 
-    bool notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried);
+    bool notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried,
+                  const std::string& standIn);
 
     void renderToTexture(const Command& c);
 

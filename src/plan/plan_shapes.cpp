@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "plan/limits.h"
+#include "plan/stand_in_size.h"
 #include "plan/uniform_forms.h"
 
 namespace glimmer {
@@ -158,10 +159,17 @@ void Builder::obj(const Command& c) {
         diags_.error(file(), c.loc, fmt::format("{} takes one .obj file name", c.spelled));
         return;
     }
+    // A missing model's stand-in (--stand-ins) is a sphere sized to the space
+    // the script gives its object (plan/stand_in_size.h), so it is seen.
+    auto [w, h] = aspectSize();
+    const float radius = standInRadius(projection_.matrix(w, h), view_ * model_);
+    const char* shape = c.kind == CommandKind::WireObj ? "wire sphere" : "sphere";
     bool usable = false;
-    std::string path = findFile(c.args[0], "model", usable);
+    std::string path = findFile(c.args[0], "model", usable,
+                                fmt::format("a {} of radius {:.3g} stands in for it, {:.0f}% of the view's height",
+                                            shape, radius, 100 * kStandInViewShare));
     if (!usable) return;
-    mesh(c, {}, path);
+    mesh(c, path.empty() ? std::vector<double>{double(radius)} : std::vector<double>{}, path);
 }
 
 int Builder::meshIndex(const MeshDecl& m) {

@@ -44,18 +44,18 @@ bool Builder::textureFile(const Arg& a, std::string& path) {
     return usable;
 }
 
-std::string Builder::findFile(const Arg& a, const char* what, bool& usable) {
+std::string Builder::findFile(const Arg& a, const char* what, bool& usable, const std::string& standIn) {
     std::vector<std::string> tried;
     usable = false;
     if (!options_.sandbox) {
         std::string path = resolveFile(file(), a.text, options_.includeDirs, &tried);
-        usable = !path.empty() || notFound(a.loc, what, a.text, tried);
+        usable = !path.empty() || notFound(a.loc, what, a.text, tried, standIn);
         return path;
     }
     std::string path, why;
     switch (resolveSandboxed(file(), a.text, options_.includeDirs, path, tried, why)) {
     case SandboxLookup::Found: usable = true; return path;
-    case SandboxLookup::NotFound: usable = notFound(a.loc, what, a.text, tried); break;
+    case SandboxLookup::NotFound: usable = notFound(a.loc, what, a.text, tried, standIn); break;
     case SandboxLookup::Outside:
         diags_.error(file(), a.loc, fmt::format("{} '{}' is outside the sandbox ({}); --sandbox reads only files "
                                                 "in the script's folder and -I folders", what, a.text, why));
@@ -224,14 +224,15 @@ void Builder::cubeMap(const Command& c) {
 
 // An error; with --stand-ins (not for a shader) a warning, and true: the
 // path stays empty and the load step makes a stand-in (assets/stand_ins.h).
-bool Builder::notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried) {
+bool Builder::notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried,
+                       const std::string& standIn) {
     std::string where;
     for (const auto& d : tried) where += (where.empty() ? "" : ", ") + d;
     std::string message = fmt::format("cannot find {} '{}' (looked in {})", what, name, where);
-    bool standIn = options_.standIns && std::string_view(what) != "shader";
-    if (standIn) diags_.warning(file(), loc, message + "; a stand-in takes its place (--stand-ins)");
+    bool useStandIn = options_.standIns && std::string_view(what) != "shader";
+    if (useStandIn) diags_.warning(file(), loc, message + "; " + standIn + " (--stand-ins)");
     else diags_.error(file(), loc, message);
-    return standIn;
+    return useStandIn;
 }
 
 void Builder::renderToTexture(const Command& c) {
