@@ -4,6 +4,7 @@
 
 #include "shader/coverage_hints.h"
 #include "gl/clear_texture.h"
+#include "gl/unset_uniforms.h"
 
 #include <tuple>
 
@@ -160,6 +161,7 @@ void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics
             p->paintsAllItCovers = p->paintsAllItCovers && vouched;
         }
         checkUniformSettings(decl, p->uniforms, file, diags);
+        warnUnsetUniforms(decl, p->uniforms, assets.shaderTexts[i], file, diags);
         for (const auto& u : p->uniforms) {
             const UniformSetting* setting = nullptr;
             for (const auto& st : decl.uniforms)
