@@ -200,6 +200,31 @@ const char* kindPhrase(TextureDecl::Kind k) {
     return "a texture";
 }
 
+// Samplers of two kinds (a sampler2D and a samplerCube) set to one unit in
+// one Program: each target of the unit may hold its texture, but OpenGL
+// refuses to draw with such a program (GL_INVALID_OPERATION), so nothing
+// it draws appears.
+void warnMixedSamplerUnits(const std::vector<ActiveUniform>& uniforms, const std::vector<const UniformSetting*>& settings,
+                           const ProgramDecl& decl, const std::string& file, Diagnostics& diags) {
+    std::map<int, std::pair<const ActiveUniform*, GLenum>> first;  // unit -> its first sampler
+    std::set<int> told;
+    for (size_t k = 0; k < uniforms.size() && k < settings.size(); ++k) {
+        const ActiveUniform& u = uniforms[k];
+        const UniformSetting* setting = settings[k];
+        if (!samplerTypeName(u.type) || !setting || setting->values.empty()) continue;
+        int unit = int(std::round(setting->values[0]));
+        auto [it, added] = first.try_emplace(unit, &u, u.type);
+        TextureDecl::Kind a{}, b{};
+        if (added || !samplerTextureKind(u.type, a) || !samplerTextureKind(it->second.second, b) || a == b) continue;
+        if (!told.insert(unit).second) continue;
+        diags.warning(file, decl.loc,
+                      fmt::format("Program {}: {} {} and {} {} both read unit {}; OpenGL draws nothing with samplers "
+                                  "of two kinds on one unit: give them different units", decl.name,
+                                  samplerTypeName(it->second.second), it->second.first->name, samplerTypeName(u.type),
+                                  u.name, unit));
+    }
+}
+
 }  // namespace
 
 void Renderer::warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& diags) {
@@ -207,6 +232,9 @@ void Renderer::warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& 
     // holds, for each draw, the texture of each kind bound there last (one
     // per OpenGL target); a sampler of a kind the unit lacks reads black.
     std::set<std::tuple<int, std::string, int>> told;  // program, sampler, texture
+    for (size_t i = 0; i < programs_.size() && i < plan.programs.size(); ++i)
+        if (programs_[i])
+            warnMixedSamplerUnits(programs_[i]->uniforms, programs_[i]->settings, plan.programs[i], plan.scriptFile, diags);
     for (const auto& pass : plan.passes) {
         if (!pass.needed && !everything) continue;
         for (const auto& st : pass.steps) {

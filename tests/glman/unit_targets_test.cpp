@@ -25,5 +25,17 @@ TEST(UnitTargets, ACubeMapAndA2DTextureOnOneUnitAreBothRead) {
     EXPECT_NEAR(right[2], 20, 2);
 }
 
+// One Program whose sampler2D and samplerCube share a unit: OpenGL refuses
+// the draw (GL_INVALID_OPERATION), so it is said where the Program is.
+TEST(UnitTargets, SamplersOfTwoKindsOnOneUnitInOneProgramAreWarnedAbout) {
+    auto r = runPipeline(script("mixed_sampler_unit"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              std::vector<std::string>{"Program Both: sampler2D uTex and samplerCube uSky both read unit 6; OpenGL "
+                                       "draws nothing with samplers of two kinds on one unit: give them different "
+                                       "units"})
+        << r->printed();
+}
+
 }  // namespace
 }  // namespace glimmer::glmantest
