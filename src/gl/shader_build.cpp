@@ -1,5 +1,6 @@
 #include "gl/shader_build.h"
 #include "gl/builtin_feed.h"
+#include "shader/uninitialized_globals.h"
 
 #include <algorithm>
 #include <cstring>
@@ -92,6 +93,25 @@ std::string infoLog(const GlApi& gl, unsigned object, bool isProgram) {
     return log;
 }
 
+// Mesa's "`gK' used uninitialized" about a global that main sets before it
+// calls any function is a false alarm (shader/uninitialized_globals.h): it
+// becomes a note that says so, and the true ones stay warnings.
+Diagnostic judgeUninitialized(Diagnostic d, const std::string& text) {
+    const std::string tail = "' used uninitialized";
+    const std::string& m = d.message;
+    if (d.severity != Severity::Warning || m.size() < tail.size() + 2 || m[0] != '`' ||
+        m.compare(m.size() - tail.size(), tail.size(), tail) != 0)
+        return d;
+    const std::string name = m.substr(1, m.size() - tail.size() - 1);
+    if (int line = globalSetByMainFirst(text, name, d.loc.line); line > 0) {
+        d.severity = Severity::Note;
+        d.fromDriver = false;
+        d.message = fmt::format("the driver's warning \"{}\" is a false alarm: main sets the global {} (line {}) "
+                                "before it calls any function", m, name, line);
+    }
+    return d;
+}
+
 }  // namespace
 
 unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
@@ -114,8 +134,11 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
         GLint status = 0;
         gl.GetShaderiv(sh, GL_COMPILE_STATUS, &status);
         std::string log = infoLog(gl, sh, false);
-        if (!log.empty())
-            mapCompilerLog(log, src, stage.path, scriptFile, stage.loc, status ? Severity::Warning : Severity::Error, diags);
+        if (!log.empty()) {
+            Diagnostics said;
+            mapCompilerLog(log, src, stage.path, scriptFile, stage.loc, status ? Severity::Warning : Severity::Error, said);
+            for (Diagnostic d : said.all()) diags.add(judgeUninitialized(std::move(d), text));
+        }
         if (!status) {
             if (log.empty()) diags.error(stage.path, {}, "the shader did not compile, and the driver said nothing");
             ok = false;

@@ -48,7 +48,7 @@ TEST(ErrorCascades, TheFirstErrorIsShownWithItsLineAndTheRestCounted) {
     size_t notShown = 0;
     auto lines = foldDiagnostics(undeclaredSampler(), glowSource(), true, true, true, 100, notShown);
     EXPECT_EQ(lines, (std::vector<std::string>{
-                         "shaders/glow.frag:6:23: error: `uImagee' undeclared\n"
+                         "shaders/glow.frag:6:23: error: `uImagee' undeclared [driver]\n"
                          "    vec3 rgb = texture( uImagee, vST ).rgb;\n"
                          "                      ^\n"
                          "shaders/glow.frag:6: note: 5 more errors follow from this one; -v shows them"}));
