@@ -112,6 +112,40 @@ Diagnostic judgeUninitialized(Diagnostic d, const std::string& text) {
     return d;
 }
 
+// Mesa's words for a const whose initialiser is not a constant expression.
+const char* const kConstInitializer = "initializer of const variable `";
+const char* const kLocalConstExtension = "#extension GL_ARB_shading_language_420pack : enable\n";
+
+// "`k2'" from Mesa's "initializer of const variable `k2' must be ...".
+std::string constName(const std::string& message) {
+    size_t open = message.find('`'), close = message.find('\'', open + 1);
+    return open == std::string::npos || close == std::string::npos ? std::string("?")
+                                                                    : message.substr(open, close - open + 1);
+}
+
+struct Compiled {
+    unsigned shader = 0;
+    GLint status = 0;
+    std::string log;
+    Diagnostics said;  // the log, against the user's file and lines
+};
+
+Compiled compileStage(const GlApi& gl, const ShaderStage& stage, const std::string& text, const std::string& prelude,
+                      const std::string& scriptFile) {
+    Compiled c;
+    PreparedSource src = prepareSource(text, prelude);
+    c.shader = gl.CreateShader(stageEnum(stage.kind));
+    const char* p = src.text.c_str();
+    gl.ShaderSource(c.shader, 1, &p, nullptr);
+    gl.CompileShader(c.shader);
+    gl.GetShaderiv(c.shader, GL_COMPILE_STATUS, &c.status);
+    c.log = infoLog(gl, c.shader, false);
+    if (!c.log.empty())
+        mapCompilerLog(c.log, src, stage.path, scriptFile, stage.loc, c.status ? Severity::Warning : Severity::Error,
+                       c.said);
+    return c;
+}
+
 }  // namespace
 
 unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
@@ -126,19 +160,51 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
             continue;
         }
         const std::string& text = *stageTexts[k];
-        PreparedSource src = prepareSource(text, decl.gstap ? kGstapPrelude : "");
-        unsigned sh = gl.CreateShader(stageEnum(stage.kind));
-        const char* p = src.text.c_str();
-        gl.ShaderSource(sh, 1, &p, nullptr);
-        gl.CompileShader(sh);
-        GLint status = 0;
-        gl.GetShaderiv(sh, GL_COMPILE_STATUS, &status);
-        std::string log = infoLog(gl, sh, false);
-        if (!log.empty()) {
-            Diagnostics said;
-            mapCompilerLog(log, src, stage.path, scriptFile, stage.loc, status ? Severity::Warning : Severity::Error, said);
-            for (Diagnostic d : said.all()) diags.add(judgeUninitialized(std::move(d), text));
+        const std::string prelude = decl.gstap ? kGstapPrelude : "";
+        Compiled c = compileStage(gl, stage, text, prelude, scriptFile);
+        // NVIDIA accepts a local const initialised from a non-constant
+        // expression in any GLSL version; GLSL 4.20 allows it for locals
+        // (ARB_shading_language_420pack), so Mesa does too once that is on.
+        std::optional<Diagnostic> hint;
+        if (!c.status) {
+            SourceLoc at;
+            std::string what;
+            for (const auto& d : c.said.all())
+                if (what.empty() && d.message.rfind(kConstInitializer, 0) == 0) at = d.loc, what = d.message;
+            if (!what.empty()) {
+                Compiled again = compileStage(gl, stage, text, prelude + kLocalConstExtension, scriptFile);
+                if (again.status) {
+                    gl.DeleteShader(c.shader);
+                    c = std::move(again);
+                    diags.warning(stage.path, at,
+                                  fmt::format("a local const set from a non-constant expression ({}): accepted, as "
+                                              "GLSL 4.20 allows and NVIDIA does in any version; "
+                                              "GL_ARB_shading_language_420pack turned on for this shader",
+                                              constName(what)));
+                } else {
+                    // Outside any function it stays an error, in every
+                    // version (the extension leaves the same error on the
+                    // same line): say the cause and the one-word fix.
+                    gl.DeleteShader(again.shader);
+                    bool stays = false;
+                    for (const auto& d : again.said.all())
+                        stays = stays || (d.loc.line == at.line && d.message == what);
+                    if (stays)
+                        hint = Diagnostic{Severity::Note, stage.path, at,
+                                          fmt::format("{} is a const outside any function: its initialiser must "
+                                                      "be a constant expression in every GLSL version (4.20 relaxed "
+                                                      "it only inside functions); remove 'const' and it is set when "
+                                                      "the shader starts",
+                                                      constName(what)),
+                                          false};
+                }
+            }
         }
+        unsigned sh = c.shader;
+        GLint status = c.status;
+        const std::string& log = c.log;
+        for (Diagnostic d : c.said.all()) diags.add(judgeUninitialized(std::move(d), text));
+        if (hint) diags.add(*hint);
         if (!status) {
             if (log.empty()) diags.error(stage.path, {}, "the shader did not compile, and the driver said nothing");
             ok = false;
