@@ -65,7 +65,9 @@ bool needsStandIn(const MeshDecl& m) {
 }
 
 Mesh standInMesh(const MeshDecl& m) {
-    Mesh sphere = makeSphere(1.f, 32, 16);
+    // The plan sizes it to the view (plan/stand_in_size.h); a unit sphere otherwise.
+    const float radius = m.params.empty() ? 1.f : float(m.params[0]);
+    Mesh sphere = makeSphere(radius, 32, 16);
     if (m.shape == CommandKind::ObjAdj) return makeObjAdjacency(sphere);
     if (m.shape == CommandKind::WireObj) return makeWire(sphere);
     return sphere;

@@ -22,7 +22,8 @@ Image standInImage(const std::string& name, int size = kStandInSize);
 bool standInTexture(const TextureDecl& t, TextureFile& out, std::string& why);
 bool needsStandIn(const TextureDecl& t);
 
-// A missing Obj, ObjAdj or WireObj file: a unit sphere, with adjacency or as
+// A missing Obj, ObjAdj or WireObj file: a sphere of the radius the plan
+// chose for the view (MeshDecl::params[0]; 1 when none), with adjacency or as
 // its edges as the command asks.
 bool needsStandIn(const MeshDecl& m);
 Mesh standInMesh(const MeshDecl& m);

@@ -15,11 +15,13 @@ std::string diagnosticKind(const std::string& message);
 
 // The text to print, one entry per diagnostic or folded group, in the order
 // of the first of each. `fold`: warnings whose kind occurs twice or more
-// become one summary line ("...; -v to list them"). `warnings`: false drops
-// every warning and note (-q). At most `maxLines` entries are formatted (a
+// become one summary line ("...; -v to list them"). `cascades`: errors that
+// follow from an earlier one (driver/error_cascades.h) are counted in one
+// line under it instead of printed. `warnings`: false drops every warning
+// and note (-q). At most `maxLines` entries are formatted (a
 // million diagnostics must not cost a million formatted source lines);
 // `notShown` counts the entries left out.
 std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, const SourceTexts& sources, bool fold,
-                                         bool warnings, size_t maxLines, size_t& notShown);
+                                         bool cascades, bool warnings, size_t maxLines, size_t& notShown);
 
 }  // namespace glimmer

@@ -49,8 +49,8 @@ void printDiagnostics(const Diagnostics& diags, const SourceTexts& sources, std:
     // a grader's console.
     Verbosity v = verbosity();
     size_t notShown = 0;
-    auto lines = foldDiagnostics(diags.all(), sources, v == Verbosity::Normal, v != Verbosity::Quiet,
-                                 kMaxPrintedDiagnostics, notShown);
+    auto lines = foldDiagnostics(diags.all(), sources, v == Verbosity::Normal, v != Verbosity::Verbose,
+                                 v != Verbosity::Quiet, kMaxPrintedDiagnostics, notShown);
     for (const auto& text : lines) out << text << (text.empty() || text.back() != '\n' ? "\n" : "");
     if (notShown > 0) out << fmt::format("... {} more diagnostics not shown\n", notShown);
     int e = diags.errorCount(), w = diags.warningCount();

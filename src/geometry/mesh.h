@@ -52,8 +52,9 @@ Mesh makeQuadYZ(float x, float size, int ny = 1, int nz = 1);
 // the north pole); at a pole, the limit along that vertex's meridian.
 // 2*slices*(stacks-1) triangles (none degenerate); at least 3 slices, 2 stacks.
 Mesh makeSphere(float radius = 1.f, int slices = 60, int stacks = 60);
-// Torus around the Z axis, lying in the XY plane (glutSolidTorus): `outer` is
-// the radius of the ring, `inner` that of the tube. s goes once around the ring
+// Torus around the Z axis, lying in the XY plane: `outer` is the radius of
+// the ring, `inner` that of the tube (GLIB writes them tube first, as
+// glutSolidTorus does; geometry/shape_registry.cpp swaps them). s goes once around the ring
 // from +X towards +Y (`rings` steps), t once around the tube starting at the
 // outer equator, then up towards +Z (`sides` steps); (rings+1)*(sides+1)
 // vertices, 2*rings*sides triangles, at least 3 of each. Tangent = d position / d t.

@@ -17,8 +17,9 @@ Mesh quadYZ(const std::vector<double>& p) { return makeQuadYZ(float(p[0]), float
 Mesh sphere(const std::vector<double>& p) {
     return makeSphere(float(p[0]), std::max(whole(p[1]), 3), std::max(whole(p[2]), 2));
 }
+// glman's order is glutSolidTorus's: the tube's radius first, then the ring's.
 Mesh torus(const std::vector<double>& p) {
-    return makeTorus(float(p[0]), float(p[1]), std::max(whole(p[2]), 3), std::max(whole(p[3]), 3));
+    return makeTorus(float(p[1]), float(p[0]), std::max(whole(p[2]), 3), std::max(whole(p[3]), 3));
 }
 Mesh box(const std::vector<double>& p) { return makeBox(float(p[0]), float(p[1]), float(p[2])); }
 Mesh cylinder(const std::vector<double>& p) { return makeCylinder(float(p[0]), float(p[1]), std::max(whole(p[2]), 3)); }
@@ -38,7 +39,9 @@ const ShapeRule kShapes[] = {
     {"QuadXZ", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadXZ, {}, 2, 1},
     {"QuadYZ", S::Numbers, 2, 4, {0, 1, 1, 1}, false, {}, F::Always, quadYZ, {}, 2, 1},
     {"Sphere", S::Numbers, 0, 3, {1, 60, 60}, false, {}, F::Never, sphere, {}, 1, 2},
-    {"Torus", S::Numbers, 0, 4, {1, .5, 20, 40}, false, {}, F::Never, torus, {}, 2, 3},
+    // Torus [tube [ring [sides [rings]]]]: with nothing written, the torus of
+    // glman's manual default "1.0 0.5" (ring 1, tube .5), as before.
+    {"Torus", S::Numbers, 0, 4, {.5, 1, 20, 40}, false, {}, F::Never, torus, {}, 2, 3},
     {"Box", S::Numbers, 0, 3, {2, 2, 2}, true, {}, F::Never, box, {}},
     {"Cylinder", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cylinder, {}},
     {"Cone", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cone, {}},
@@ -51,7 +54,7 @@ const ShapeRule kShapes[] = {
     {"JitterCloud", S::Numbers, 0, 3, {10, 1, .5}, false, {0, 1, 100, "count"}, F::Never, jitterCloud, {}},
     {"WireBox", S::Numbers, 0, 3, {2, 2, 2}, true, {}, F::Never, box, "Box"},
     {"WireSphere", S::Numbers, 0, 3, {1, 60, 60}, false, {}, F::Never, sphere, "Sphere", 1, 2},
-    {"WireTorus", S::Numbers, 0, 4, {1, .5, 20, 40}, false, {}, F::Never, torus, "Torus", 2, 3},
+    {"WireTorus", S::Numbers, 0, 4, {.5, 1, 20, 40}, false, {}, F::Never, torus, "Torus", 2, 3},
     {"WireCylinder", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cylinder, "Cylinder"},
     {"WireCone", S::Numbers, 0, 3, {1, 1, 40}, false, kSlices, F::Never, cone, "Cone"},
     {"WireTeapot", S::Numbers, 0, 2, {1, 10}, false, kTeapotSubdivisions, F::Never, teapot, "Teapot"},

@@ -107,6 +107,7 @@ void mapCompilerLog(const std::string& log, const PreparedSource& src, const std
         if (!line.empty() && line.back() == '\r') line.pop_back();
         Diagnostic d;
         d.file = file;
+        d.fromDriver = true;
         int ln = 0, col = 0;
         if (parseMesa(line, ln, col, d.severity, d.message)) {
             d.loc = {src.originalLine(ln), col};
@@ -118,7 +119,7 @@ void mapCompilerLog(const std::string& log, const PreparedSource& src, const std
         }
         diags.add(d);
     }
-    if (!unmatched.empty()) diags.add({defaultSeverity, fallbackFile, fallback, unmatched});
+    if (!unmatched.empty()) diags.add({defaultSeverity, fallbackFile, fallback, unmatched, true});
 }
 
 }  // namespace glimmer

@@ -255,18 +255,24 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
 
     if (!drawProblem(prog, mesh).empty()) return;  // told in prepare
 
-    // Each unit holds the texture the script bound there last, on its own
-    // target; the unit's other targets are emptied, so a sampler of the
-    // wrong kind reads nothing rather than an older texture.
-    for (const auto& [unit, tex] : d.units) {
+    // Each unit holds, on each target (2-D, 3-D, cube map), the texture of
+    // that kind the script bound there last, as OpenGL does; a target the
+    // script never gave a texture is emptied, so a sampler of a kind the unit
+    // lacks reads nothing rather than an older draw's texture.
+    for (const auto& [unit, last] : d.units) {
         gl_->ActiveTexture(GLenum(GL_TEXTURE0 + unit));
-        const TextureObject& t = textures_[tex];
-        // A texture this pass draws into stays unbound: sampling it would be
-        // a feedback loop, and a driver may copy or flush it just for being
-        // bound (measured on an H100: a 1920x1080 pass took 4 to 8 times as
-        // long with its own target bound on another unit).
-        bool drawnInto = std::find(targets.begin(), targets.end(), tex) != targets.end();
-        for (GLenum target : kTargets) gl_->BindTexture(target, target == t.target && !drawnInto ? t.id : 0);
+        GLuint onTarget[std::size(kTargets)] = {};
+        for (int tex : d.texturesOn(unit)) {
+            const TextureObject& t = textures_[tex];
+            // A texture this pass draws into stays unbound: sampling it would be
+            // a feedback loop, and a driver may copy or flush it just for being
+            // bound (measured on an H100: a 1920x1080 pass took 4 to 8 times as
+            // long with its own target bound on another unit).
+            if (std::find(targets.begin(), targets.end(), tex) != targets.end()) continue;
+            for (size_t k = 0; k < std::size(kTargets); ++k)
+                if (kTargets[k] == t.target) onTarget[k] = t.id;
+        }
+        for (size_t k = 0; k < std::size(kTargets); ++k) gl_->BindTexture(kTargets[k], onTarget[k]);
     }
     // The built-in noise, on units 2 and 3, unless the script put a texture
     // of the same kind there.
@@ -275,8 +281,9 @@ void Renderer::drawStep(const Draw& d, const UniformValues& values, double time,
             if (!(three ? prog->noise3 : prog->noise2)) continue;
             int unit = three ? 3 : 2;
             GLenum target = three ? GL_TEXTURE_3D : GL_TEXTURE_2D;
-            auto it = d.units.find(unit);
-            if (it != d.units.end() && textures_[it->second].target == target) continue;
+            bool scripts = false;
+            for (int tex : d.texturesOn(unit)) scripts = scripts || textures_[tex].target == target;
+            if (scripts) continue;
             gl_->ActiveTexture(GLenum(GL_TEXTURE0 + unit));
             gl_->BindTexture(target, noiseTexture(three, three ? plan_->noise3DRes : plan_->noise2DRes));
         }

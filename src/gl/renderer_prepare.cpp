@@ -4,6 +4,7 @@
 
 #include "shader/coverage_hints.h"
 #include "gl/clear_texture.h"
+#include "gl/unset_uniforms.h"
 
 #include <tuple>
 
@@ -160,6 +161,7 @@ void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics
             p->paintsAllItCovers = p->paintsAllItCovers && vouched;
         }
         checkUniformSettings(decl, p->uniforms, file, diags);
+        warnUnsetUniforms(decl, p->uniforms, assets.shaderTexts[i], file, diags);
         for (const auto& u : p->uniforms) {
             const UniformSetting* setting = nullptr;
             for (const auto& st : decl.uniforms)
@@ -198,13 +200,41 @@ const char* kindPhrase(TextureDecl::Kind k) {
     return "a texture";
 }
 
+// Samplers of two kinds (a sampler2D and a samplerCube) set to one unit in
+// one Program: each target of the unit may hold its texture, but OpenGL
+// refuses to draw with such a program (GL_INVALID_OPERATION), so nothing
+// it draws appears.
+void warnMixedSamplerUnits(const std::vector<ActiveUniform>& uniforms, const std::vector<const UniformSetting*>& settings,
+                           const ProgramDecl& decl, const std::string& file, Diagnostics& diags) {
+    std::map<int, std::pair<const ActiveUniform*, GLenum>> first;  // unit -> its first sampler
+    std::set<int> told;
+    for (size_t k = 0; k < uniforms.size() && k < settings.size(); ++k) {
+        const ActiveUniform& u = uniforms[k];
+        const UniformSetting* setting = settings[k];
+        if (!samplerTypeName(u.type) || !setting || setting->values.empty()) continue;
+        int unit = int(std::round(setting->values[0]));
+        auto [it, added] = first.try_emplace(unit, &u, u.type);
+        TextureDecl::Kind a{}, b{};
+        if (added || !samplerTextureKind(u.type, a) || !samplerTextureKind(it->second.second, b) || a == b) continue;
+        if (!told.insert(unit).second) continue;
+        diags.warning(file, decl.loc,
+                      fmt::format("Program {}: {} {} and {} {} both read unit {}; OpenGL draws nothing with samplers "
+                                  "of two kinds on one unit: give them different units", decl.name,
+                                  samplerTypeName(it->second.second), it->second.first->name, samplerTypeName(u.type),
+                                  u.name, unit));
+    }
+}
+
 }  // namespace
 
 void Renderer::warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& diags) {
     // Each sampler's unit as the script set it (unset: unit 0). The unit
-    // holds, for each draw, the texture bound there last; its other targets
-    // are emptied (drawStep), so a sampler of another kind reads black.
+    // holds, for each draw, the texture of each kind bound there last (one
+    // per OpenGL target); a sampler of a kind the unit lacks reads black.
     std::set<std::tuple<int, std::string, int>> told;  // program, sampler, texture
+    for (size_t i = 0; i < programs_.size() && i < plan.programs.size(); ++i)
+        if (programs_[i])
+            warnMixedSamplerUnits(programs_[i]->uniforms, programs_[i]->settings, plan.programs[i], plan.scriptFile, diags);
     for (const auto& pass : plan.passes) {
         if (!pass.needed && !everything) continue;
         for (const auto& st : pass.steps) {
@@ -230,7 +260,7 @@ void Renderer::warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& 
                 if (on == st.draw.units.end()) continue;
                 const TextureDecl& tex = plan.textures[size_t(on->second)];
                 TextureDecl::Kind reads{};
-                if (samplerTextureKind(u.type, reads) && reads == tex.kind) continue;
+                if (samplerTextureKind(u.type, reads) && st.draw.textureOn(unit, reads, plan.textures) >= 0) continue;
                 if (!told.insert({st.draw.program, u.name, on->second}).second) continue;
                 diags.warning(plan.scriptFile, decl.loc,
                               fmt::format("Program {}: {} {} reads unit {}, which holds {} (line {}); it reads black",

@@ -1,5 +1,6 @@
 #include "gl/shader_build.h"
 #include "gl/builtin_feed.h"
+#include "shader/uninitialized_globals.h"
 
 #include <algorithm>
 #include <cstring>
@@ -104,6 +105,59 @@ std::string infoLog(const GlApi& gl, unsigned object, bool isProgram) {
     return log;
 }
 
+// Mesa's "`gK' used uninitialized" about a global that main sets before it
+// calls any function is a false alarm (shader/uninitialized_globals.h): it
+// becomes a note that says so, and the true ones stay warnings.
+Diagnostic judgeUninitialized(Diagnostic d, const std::string& text) {
+    const std::string tail = "' used uninitialized";
+    const std::string& m = d.message;
+    if (d.severity != Severity::Warning || m.size() < tail.size() + 2 || m[0] != '`' ||
+        m.compare(m.size() - tail.size(), tail.size(), tail) != 0)
+        return d;
+    const std::string name = m.substr(1, m.size() - tail.size() - 1);
+    if (int line = globalSetByMainFirst(text, name, d.loc.line); line > 0) {
+        d.severity = Severity::Note;
+        d.fromDriver = false;
+        d.message = fmt::format("the driver's warning \"{}\" is a false alarm: main sets the global {} (line {}) "
+                                "before it calls any function", m, name, line);
+    }
+    return d;
+}
+
+// Mesa's words for a const whose initialiser is not a constant expression.
+const char* const kConstInitializer = "initializer of const variable `";
+const char* const kLocalConstExtension = "#extension GL_ARB_shading_language_420pack : enable\n";
+
+// "`k2'" from Mesa's "initializer of const variable `k2' must be ...".
+std::string constName(const std::string& message) {
+    size_t open = message.find('`'), close = message.find('\'', open + 1);
+    return open == std::string::npos || close == std::string::npos ? std::string("?")
+                                                                    : message.substr(open, close - open + 1);
+}
+
+struct Compiled {
+    unsigned shader = 0;
+    GLint status = 0;
+    std::string log;
+    Diagnostics said;  // the log, against the user's file and lines
+};
+
+Compiled compileStage(const GlApi& gl, const ShaderStage& stage, const std::string& text, const std::string& prelude,
+                      const std::string& scriptFile) {
+    Compiled c;
+    PreparedSource src = prepareSource(text, prelude);
+    c.shader = gl.CreateShader(stageEnum(stage.kind));
+    const char* p = src.text.c_str();
+    gl.ShaderSource(c.shader, 1, &p, nullptr);
+    gl.CompileShader(c.shader);
+    gl.GetShaderiv(c.shader, GL_COMPILE_STATUS, &c.status);
+    c.log = infoLog(gl, c.shader, false);
+    if (!c.log.empty())
+        mapCompilerLog(c.log, src, stage.path, scriptFile, stage.loc, c.status ? Severity::Warning : Severity::Error,
+                       c.said);
+    return c;
+}
+
 }  // namespace
 
 unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
@@ -118,37 +172,71 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
             continue;
         }
         const std::string& text = *stageTexts[k];
-        const char* prelude = decl.gstap ? kGstapPrelude : "";
+        std::string prelude = decl.gstap ? kGstapPrelude : "";
         // An OpenGL ES context (WebGL 2's level) compiles only GLSL ES: a
         // desktop shader is translated first (shader/web_translate.h), its
         // errors against the user's lines; GSTAP's aliases go with it.
-        std::string translated;
-        const bool viaTranslation = gl.es && !isGlslEs300(text);
-        if (viaTranslation) {
+        if (gl.es && !isGlslEs300(text)) {
             WebTranslation t = translateForWeb({text, webStage(stage.kind), stage.path, prelude}, diags);
             if (!t.ok) {
                 ok = false;
                 continue;
             }
-            translated = std::move(t.text);
-            prelude = "";
-        }
-        PreparedSource src = prepareSource(viaTranslation ? translated : text, prelude);
-        unsigned sh = gl.CreateShader(stageEnum(stage.kind));
-        const char* p = src.text.c_str();
-        gl.ShaderSource(sh, 1, &p, nullptr);
-        gl.CompileShader(sh);
-        GLint status = 0;
-        gl.GetShaderiv(sh, GL_COMPILE_STATUS, &status);
-        std::string log = infoLog(gl, sh, false);
-        if (!log.empty() && viaTranslation) {
+            Compiled c = compileStage(gl, stage, t.text, "", scriptFile);
             // The lines are the translation's, not the user's: the driver's
             // word against the file, and only when it refuses (its warnings
             // on generated text would point nowhere useful).
-            if (!status)
-                diags.error(stage.path, {}, "the OpenGL ES driver refused the translation for GLSL ES 3.00: " + log);
-        } else if (!log.empty())
-            mapCompilerLog(log, src, stage.path, scriptFile, stage.loc, status ? Severity::Warning : Severity::Error, diags);
+            if (!c.status) {
+                diags.error(stage.path, {}, "the OpenGL ES driver refused the translation for GLSL ES 3.00: " + c.log);
+                ok = false;
+            }
+            shaders.push_back(c.shader);
+            continue;
+        }
+        Compiled c = compileStage(gl, stage, text, prelude, scriptFile);
+        // NVIDIA accepts a local const initialised from a non-constant
+        // expression in any GLSL version; GLSL 4.20 allows it for locals
+        // (ARB_shading_language_420pack), so Mesa does too once that is on.
+        std::optional<Diagnostic> hint;
+        if (!c.status) {
+            SourceLoc at;
+            std::string what;
+            for (const auto& d : c.said.all())
+                if (what.empty() && d.message.rfind(kConstInitializer, 0) == 0) at = d.loc, what = d.message;
+            if (!what.empty()) {
+                Compiled again = compileStage(gl, stage, text, prelude + kLocalConstExtension, scriptFile);
+                if (again.status) {
+                    gl.DeleteShader(c.shader);
+                    c = std::move(again);
+                    diags.warning(stage.path, at,
+                                  fmt::format("a local const set from a non-constant expression ({}): accepted, as "
+                                              "GLSL 4.20 allows and NVIDIA does in any version; "
+                                              "GL_ARB_shading_language_420pack turned on for this shader",
+                                              constName(what)));
+                } else {
+                    // Outside any function it stays an error, in every
+                    // version (the extension leaves the same error on the
+                    // same line): say the cause and the one-word fix.
+                    gl.DeleteShader(again.shader);
+                    bool stays = false;
+                    for (const auto& d : again.said.all())
+                        stays = stays || (d.loc.line == at.line && d.message == what);
+                    if (stays)
+                        hint = Diagnostic{Severity::Note, stage.path, at,
+                                          fmt::format("{} is a const outside any function: its initialiser must "
+                                                      "be a constant expression in every GLSL version (4.20 relaxed "
+                                                      "it only inside functions); remove 'const' and it is set when "
+                                                      "the shader starts",
+                                                      constName(what)),
+                                          false};
+                }
+            }
+        }
+        unsigned sh = c.shader;
+        GLint status = c.status;
+        const std::string& log = c.log;
+        for (Diagnostic d : c.said.all()) diags.add(judgeUninitialized(std::move(d), text));
+        if (hint) diags.add(*hint);
         if (!status) {
             if (log.empty()) diags.error(stage.path, {}, "the shader did not compile, and the driver said nothing");
             ok = false;

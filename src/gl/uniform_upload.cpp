@@ -119,9 +119,7 @@ std::vector<ActiveUniform> activeUniforms(const GlApi& gl, unsigned program) {
     return out;
 }
 
-namespace {
-
-std::string typeName(GLenum type) {
+std::string uniformTypeName(GLenum type) {
     switch (type) {
     case GL_FLOAT: return "float";
     case GL_FLOAT_VEC2: return "vec2";
@@ -142,8 +140,6 @@ std::string typeName(GLenum type) {
     }
 }
 
-}  // namespace
-
 void checkUniformSettings(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
                           const std::string& scriptFile, Diagnostics& diags) {
     for (const auto& s : decl.uniforms) {
@@ -158,7 +154,7 @@ void checkUniformSettings(const ProgramDecl& decl, const std::vector<ActiveUnifo
         TypeInfo t = typeInfo(a->type);
         size_t want = size_t(t.components) * size_t(a->size);
         bool scalar = t.components == 1 && a->size == 1;
-        std::string declared = typeName(a->type) + (a->size > 1 ? fmt::format("[{}]", a->size) : "");
+        std::string declared = uniformTypeName(a->type) + (a->size > 1 ? fmt::format("[{}]", a->size) : "");
         std::string prefix = fmt::format("uniform '{}' is given {} but its shader declares it {}", s.name,
                                          formName(s.form), declared);
         bool single = s.values.size() == 1;

@@ -5,15 +5,15 @@
 namespace glimmer {
 
 void Diagnostics::error(const std::string& file, SourceLoc loc, std::string message) {
-    add({Severity::Error, file, loc, std::move(message)});
+    add({Severity::Error, file, loc, std::move(message), false});
 }
 
 void Diagnostics::warning(const std::string& file, SourceLoc loc, std::string message) {
-    add({Severity::Warning, file, loc, std::move(message)});
+    add({Severity::Warning, file, loc, std::move(message), false});
 }
 
 void Diagnostics::note(const std::string& file, SourceLoc loc, std::string message) {
-    add({Severity::Note, file, loc, std::move(message)});
+    add({Severity::Note, file, loc, std::move(message), false});
 }
 
 void Diagnostics::add(Diagnostic d) {
@@ -105,6 +105,9 @@ std::string formatDiagnostic(const Diagnostic& d, const SourceTexts& sources) {
     out += severityName(d.severity);
     out += ": ";
     out += sanitizeForTerminal(d.message, true);
+    // The OpenGL driver's own words, not Glimmer's: said so, as compilers tag
+    // a warning with the flag that raised it.
+    if (d.fromDriver) out += " [driver]";
     if (d.loc.line <= 0) return out;
 
     const std::string src = sources.line(d.file, d.loc.line);

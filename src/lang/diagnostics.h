@@ -19,6 +19,10 @@ struct Diagnostic {
     std::string file;  // as the user named it (script path, shader path, ...)
     SourceLoc loc;
     std::string message;
+    // A line of the OpenGL driver's compile or link log (gl/compiler_log):
+    // its words are the driver's, and its later errors may only follow from
+    // an earlier one (driver/error_cascades.h).
+    bool fromDriver = false;
 };
 
 class Diagnostics {
@@ -73,7 +77,8 @@ constexpr size_t kMaxPrintedDiagnostics = 100;
 std::string sanitizeForTerminal(const std::string& text, bool keepNewlines);
 
 // clang style: "file:line:col: error: message", then the source line and a
-// caret under the column (omitted when the line is unknown).
+// caret under the column (omitted when the line is unknown). A message of
+// the driver's (Diagnostic::fromDriver) ends in " [driver]".
 // Lines are joined with '\n'; there is no newline after the last one.
 std::string formatDiagnostic(const Diagnostic& d, const SourceTexts& sources);
 

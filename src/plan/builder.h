@@ -83,6 +83,7 @@ private:
 
     // A shape made from numbers (geometry/shape_registry.h): checked, completed, drawn.
     void numberShape(const Command& c, const ShapeRule& rule);
+    void torusOrderCheck(const Command& c, const std::vector<double>& numbers);
 
     void noiseRes(const Command& c);
 
@@ -111,7 +112,9 @@ private:
     // Resolves a file the script names, as glman would or, under --sandbox,
     // only inside the sandbox. `usable`: found, or a stand-in takes its place
     // (--stand-ins); false when the command cannot go on (reported).
-    std::string findFile(const Arg& a, const char* what, bool& usable);
+    // `standIn` says, for --stand-ins, what takes a missing file's place.
+    std::string findFile(const Arg& a, const char* what, bool& usable,
+                         const std::string& standIn = "a stand-in takes its place");
     // Counts a draw; false (reported once) past kMaxDraws.
     bool countDraw(SourceLoc loc);
     bool textureFile(const Arg& a, std::string& path);
@@ -141,7 +144,8 @@ private:
 
     void cubeMap(const Command& c);
 
-    bool notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried);
+    bool notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried,
+                  const std::string& standIn);
 
     void renderToTexture(const Command& c);
 
@@ -182,9 +186,12 @@ private:
     float lineWidth_ = 1.f, pointSize_ = 1.f;
     bool flat_ = false;
     bool gstap_ = false;
-    std::map<int, int> units_;
+    std::map<int, int> units_;  // unit -> the texture bound there last
+    // unit -> the texture bound there for each kind (OpenGL's one binding per target)
+    std::map<int, std::map<TextureDecl::Kind, int>> unitTargets_;
     TextureDecl::Wrap wrap_ = TextureDecl::Wrap::Repeat;  // Wrap in force for new textures
     std::map<ShaderStage::Kind, ShaderStage> stages_;
+    std::set<ShaderStage::Kind> missingStages_;  // named, but the file was not found
     int program_ = -1;
     int patchVertices_ = 3;
     std::map<MeshDecl, int> meshIndex_;

@@ -104,7 +104,15 @@ struct Draw {
     glm::mat4 modelView{1.f};
     glm::mat4 view{1.f};  // the LookAt part of modelView, so a viewer can turn the scene about the eye's target
     glm::vec4 color{1.f};
-    std::map<int, int> units;  // texture unit -> texture, as bound when the draw was written
+    std::map<int, int> units;  // texture unit -> texture, as bound when the draw was written (the last one)
+    // Textures of other kinds still bound on a unit of `units`: OpenGL keeps
+    // one binding per target (2-D, 3-D, cube map) on each unit, so a CubeMap
+    // and a Texture2D on unit 6 are both there for their own samplers.
+    std::map<int, std::vector<int>> otherTargets;
+    // Every texture bound on `unit` (the last one first), whatever its kind.
+    std::vector<int> texturesOn(int unit) const;
+    // The texture of `kind` bound on `unit`, or -1.
+    int textureOn(int unit, TextureDecl::Kind kind, const std::vector<TextureDecl>& textures) const;
     float lineWidth = 1.f, pointSize = 1.f;
     bool flatShading = false;
     int patchVertices = 3;  // NumPatchVertices: GL_PATCH_VERTICES for patch meshes (OpenGL's default 3)

@@ -285,6 +285,9 @@ Step Builder::drawStep(SourceLoc loc) {
     d.view = view_;
     d.color = color_;
     d.units = units_;
+    for (const auto& [unit, kinds] : unitTargets_)
+        for (const auto& [kind, tex] : kinds)
+            if (tex != units_.at(unit)) d.otherTargets[unit].push_back(tex);
     d.lineWidth = lineWidth_;
     d.pointSize = pointSize_;
     d.flatShading = flat_;
@@ -303,10 +306,8 @@ std::set<int> Builder::drawReads(const Draw& d) const {
     for (const auto& u : plan_.programs[d.program].uniforms)
         if (u.form == UniformSetting::Form::Constant && u.values.size() == 1 && wholeIn(u.values[0], 0, 31))
             units.insert(int(u.values[0]));
-    for (int unit : units) {
-        auto it = d.units.find(unit);
-        if (it != d.units.end()) reads.insert(it->second);
-    }
+    for (int unit : units)
+        for (int tex : d.texturesOn(unit)) reads.insert(tex);
     return reads;
 }
 

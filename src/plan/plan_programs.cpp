@@ -17,6 +17,7 @@ namespace plan_detail {
 
 void Builder::stage(const Command& c, ShaderStage::Kind kind) {
     stages_.erase(kind);
+    missingStages_.erase(kind);
     if (c.args.empty()) return;  // no argument un-sets the stage
     if (c.args.size() != 1 || c.args[0].kind != Arg::Kind::Word) {
         diags_.error(file(), c.loc, fmt::format("{} takes one shader file name", c.spelled));
@@ -28,7 +29,10 @@ void Builder::stage(const Command& c, ShaderStage::Kind kind) {
     s.loc = c.args[0].loc;
     bool usable = false;
     s.path = findFile(c.args[0], "shader", usable);
-    if (!usable) return;
+    if (!usable) {
+        missingStages_.insert(kind);
+        return;
+    }
     stages_[kind] = s;
 }
 
@@ -44,7 +48,9 @@ void Builder::program(const Command& c) {
     p.notes = std::move(pendingNotes_);
     pendingNotes_.clear();
     for (const auto& [kind, s] : stages_) p.stages.push_back(s);
-    if (p.stages.empty())
+    // A shader named but not found was reported where it was named; saying
+    // here that the Program has none would be the same mistake twice.
+    if (p.stages.empty() && missingStages_.empty())
         diags_.warning(file(), c.loc, fmt::format("Program {} has no shaders; set Vertex and Fragment first", p.name));
     p.uniforms = parseUniformSettings(c, 1, file(), diags_);
     bool fixedFunction = p.stages.empty();

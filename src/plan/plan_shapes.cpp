@@ -12,6 +12,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "plan/limits.h"
+#include "plan/stand_in_size.h"
 #include "plan/uniform_forms.h"
 
 namespace glimmer {
@@ -39,7 +40,23 @@ void Builder::numberShape(const Command& c, const ShapeRule& rule) {
             }
     std::vector<double> written;
     for (const auto& a : c.args) written.push_back(a.number);
-    mesh(c, completeShapeNumbers(rule, written));
+    std::vector<double> numbers = completeShapeNumbers(rule, written);
+    if (rule.name == "Torus" || rule.name == "WireTorus") torusOrderCheck(c, numbers);
+    mesh(c, std::move(numbers));
+}
+
+// glman (like glutSolidTorus) reads the tube's radius first and the ring's
+// second; glman's manual names them the other way round on its Torus line,
+// so scripts exist in both orders. A tube wider than its ring is drawn as
+// written (a lump with no hole), but the student is told how it was read.
+void Builder::torusOrderCheck(const Command& c, const std::vector<double>& numbers) {
+    if (c.args.empty() || numbers[0] <= numbers[1]) return;
+    const std::string tube = c.args[0].text;
+    const std::string ring = c.args.size() > 1 ? c.args[1].text : fmt::format("{}", numbers[1]);
+    diags_.warning(file(), c.args[0].loc,
+                   fmt::format("{} read in glman's order (tube radius, then ring radius): a tube of radius {} around a "
+                               "ring of radius {}, which has no hole; for a ring write '{} {} {}'",
+                               c.spelled, tube, ring, c.spelled, ring, tube));
 }
 
 // One point from an `[x y z]` group (a 2-number group lies at z = 0).
@@ -142,10 +159,17 @@ void Builder::obj(const Command& c) {
         diags_.error(file(), c.loc, fmt::format("{} takes one .obj file name", c.spelled));
         return;
     }
+    // A missing model's stand-in (--stand-ins) is a sphere sized to the space
+    // the script gives its object (plan/stand_in_size.h), so it is seen.
+    auto [w, h] = aspectSize();
+    const float radius = standInRadius(projection_.matrix(w, h), view_ * model_);
+    const char* shape = c.kind == CommandKind::WireObj ? "wire sphere" : "sphere";
     bool usable = false;
-    std::string path = findFile(c.args[0], "model", usable);
+    std::string path = findFile(c.args[0], "model", usable,
+                                fmt::format("a {} of radius {:.3g} stands in for it, {:.0f}% of the view's height",
+                                            shape, radius, 100 * kStandInViewShare));
     if (!usable) return;
-    mesh(c, {}, path);
+    mesh(c, path.empty() ? std::vector<double>{double(radius)} : std::vector<double>{}, path);
 }
 
 int Builder::meshIndex(const MeshDecl& m) {

@@ -44,18 +44,18 @@ bool Builder::textureFile(const Arg& a, std::string& path) {
     return usable;
 }
 
-std::string Builder::findFile(const Arg& a, const char* what, bool& usable) {
+std::string Builder::findFile(const Arg& a, const char* what, bool& usable, const std::string& standIn) {
     std::vector<std::string> tried;
     usable = false;
     if (!options_.sandbox) {
         std::string path = resolveFile(file(), a.text, options_.includeDirs, &tried);
-        usable = !path.empty() || notFound(a.loc, what, a.text, tried);
+        usable = !path.empty() || notFound(a.loc, what, a.text, tried, standIn);
         return path;
     }
     std::string path, why;
     switch (resolveSandboxed(file(), a.text, options_.includeDirs, path, tried, why)) {
     case SandboxLookup::Found: usable = true; return path;
-    case SandboxLookup::NotFound: usable = notFound(a.loc, what, a.text, tried); break;
+    case SandboxLookup::NotFound: usable = notFound(a.loc, what, a.text, tried, standIn); break;
     case SandboxLookup::Outside:
         diags_.error(file(), a.loc, fmt::format("{} '{}' is outside the sandbox ({}); --sandbox reads only files "
                                                 "in the script's folder and -I folders", what, a.text, why));
@@ -75,10 +75,12 @@ void Builder::bindTexture(int unit, TextureDecl t) {
             if (o.source == TextureDecl::Source::File && o.kind == t.kind && o.path == t.path &&
                 o.facePaths == t.facePaths && o.wrap == t.wrap && (!options_.standIns || o.faceShown == t.faceShown)) {
                 units_[unit] = int(i);
+                unitTargets_[unit][t.kind] = int(i);
                 return;
             }
         }
     }
+    unitTargets_[unit][t.kind] = int(plan_.textures.size());
     plan_.textures.push_back(std::move(t));
     units_[unit] = int(plan_.textures.size()) - 1;
 }
@@ -222,14 +224,15 @@ void Builder::cubeMap(const Command& c) {
 
 // An error; with --stand-ins (not for a shader) a warning, and true: the
 // path stays empty and the load step makes a stand-in (assets/stand_ins.h).
-bool Builder::notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried) {
+bool Builder::notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried,
+                       const std::string& standIn) {
     std::string where;
     for (const auto& d : tried) where += (where.empty() ? "" : ", ") + d;
     std::string message = fmt::format("cannot find {} '{}' (looked in {})", what, name, where);
-    bool standIn = options_.standIns && std::string_view(what) != "shader";
-    if (standIn) diags_.warning(file(), loc, message + "; a stand-in takes its place (--stand-ins)");
+    bool useStandIn = options_.standIns && std::string_view(what) != "shader";
+    if (useStandIn) diags_.warning(file(), loc, message + "; " + standIn + " (--stand-ins)");
     else diags_.error(file(), loc, message);
-    return standIn;
+    return useStandIn;
 }
 
 void Builder::renderToTexture(const Command& c) {
@@ -244,13 +247,18 @@ void Builder::renderToTexture(const Command& c) {
     for (const auto& a : c.args) {
         int unit = unitArg(c, a);
         if (unit < 0) return;
+        // The unit's 2-D texture, also when a cube map or volume was bound
+        // there after it (they sit on other targets of the unit).
         auto it = units_.find(unit);
         if (it == units_.end()) {
             diags_.error(file(), a.loc, fmt::format("no texture on unit {} to render into; "
                                                     "give it one first with Texture2D {} width height", unit, unit));
             return;
         }
-        const TextureDecl& t = plan_.textures[it->second];
+        int index = it->second;
+        const auto& kinds = unitTargets_[unit];
+        if (auto flat = kinds.find(TextureDecl::Kind::Tex2D); flat != kinds.end()) index = flat->second;
+        const TextureDecl& t = plan_.textures[size_t(index)];
         if (t.kind != TextureDecl::Kind::Tex2D) {
             diags_.error(file(), a.loc, fmt::format("unit {} holds a {}; render into an empty texture made with "
                                                     "Texture2D {} width height", unit,
@@ -271,7 +279,7 @@ void Builder::renderToTexture(const Command& c) {
                 return;
             }
         }
-        p.targets.push_back(it->second);
+        p.targets.push_back(index);
     }
     plan_.passes.push_back(std::move(p));
 }

@@ -28,7 +28,11 @@ TEST(CliStandIns, RenderDrawsACheckerboardAndASphere) {
     ASSERT_EQ(r.exitCode, 0) << r.err;
     // One warning per missing file, on the script's line and column.
     EXPECT_EQ(countOf(r.err, ": warning: cannot find "), 9) << r.err;
-    EXPECT_EQ(countOf(r.err, "; a stand-in takes its place (--stand-ins)\n"), 9) << r.err;
+    EXPECT_EQ(countOf(r.err, "; a stand-in takes its place (--stand-ins)\n"), 8) << r.err;
+    // The model's says what stands in: a sphere sized to the view (Ortho -2 2,
+    // Scale .5: a radius of 1.6 spans 40% of the height).
+    EXPECT_EQ(countOf(r.err, "; a sphere of radius 1.6 stands in for it, 40% of the view's height (--stand-ins)\n"), 1)
+        << r.err;
     EXPECT_NE(r.err.find(cliData("stand_ins.glib") + ":4:13: warning: cannot find texture 'lost_picture.bmp'"),
               std::string::npos) << r.err;
     EXPECT_NE(r.err.find(cliData("stand_ins.glib") + ":17:5: warning: cannot find model 'lost_model.obj'"),
@@ -43,11 +47,45 @@ TEST(CliStandIns, RenderDrawsACheckerboardAndASphere) {
     EXPECT_EQ(px(img, 12, 36), grey);
     EXPECT_EQ(px(img, 12, 44), magenta);
     EXPECT_EQ(px(img, 60, 92), magenta);
-    // The model: a sphere of radius 1 scaled by .5 at x = 1: pixels 80..111.
+    // The model: a sphere of radius 1.6 scaled by .5 at x = 1 (pixel 96): a
+    // radius of 25.6 pixels, 40% of the 128-pixel height across.
     EXPECT_EQ(px(img, 96, 64), red);
-    EXPECT_EQ(px(img, 96 + 14, 64), red);
-    EXPECT_EQ(px(img, 96 + 18, 64), black);
-    EXPECT_EQ(px(img, 96, 64 - 18), black);
+    EXPECT_EQ(px(img, 96 + 24, 64), red);
+    EXPECT_EQ(px(img, 96 + 28, 64), black);
+    EXPECT_EQ(px(img, 96, 64 - 24), red);
+    EXPECT_EQ(px(img, 96, 64 - 28), black);
+}
+
+// A scene set up for a 60-unit model, 150 units from the eye: the missing
+// model's stand-in spans 40% of the view's height, centred where it sits.
+TEST(CliStandIns, AMissingModelsStandInIsSizedToTheView) {
+    TempDir dir;
+    auto r = runGlimmer({"render", cliData("stand_in_dragon.glib"), "-o", dir.file("o.png"), "--size", "100x100",
+                         "--backend", "osmesa", "--stand-ins"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find(cliData("stand_in_dragon.glib") + ":10:5: warning: cannot find model 'lost_dragon.obj'"),
+              std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("); a sphere of radius 28 stands in for it, 40% of the view's height (--stand-ins)\n"),
+              std::string::npos) << r.err;
+    glimmer::Image img;
+    std::string why;
+    ASSERT_TRUE(glimmer::loadImage(dir.file("o.png"), img, why)) << why;
+    // Its outline, row 50 and column 50: red from about 30 to 70 (a little
+    // wider: a perspective shows a sphere's silhouette slightly larger).
+    int left = -1, right = -1, top = -1, bottom = -1;
+    for (int i = 0; i < 100; ++i) {
+        if (px(img, i, 50)[0] == 255) {
+            if (left < 0) left = i;
+            right = i;
+        }
+        if (px(img, 50, i)[0] == 255) {
+            if (top < 0) top = i;
+            bottom = i;
+        }
+    }
+    EXPECT_NEAR(right - left + 1, 40, 3);
+    EXPECT_NEAR(bottom - top + 1, 40, 3);
+    EXPECT_NEAR((left + right) / 2.0, 49.5, 1.5);
 }
 
 TEST(CliStandIns, CheckLoadsEveryStandIn) {

@@ -105,9 +105,8 @@ TEST(GlmanCheck, ASamplerOfTheWrongKindForItsUnitIsWarnedOnItsProgramLine) {
                          // Two draws, one warning.
                          "10: warning: Program Slice: sampler3D uVol reads unit 5, which holds a 2-D texture "
                          "(line 5); it reads black",
-                         // Right while unit 7 holds the volume; not once line 15 binds an image there.
-                         "13: warning: Program Right: sampler3D uVol reads unit 7, which holds a 2-D texture "
-                         "(line 15); it reads black",
+                         // Not Right: line 15 puts an image on unit 7's 2-D target, and the
+                         // volume stays on its 3-D target (one binding per target, as in OpenGL).
                          "18: warning: Program Flat: sampler2D uTex reads unit 6, which holds a cube map "
                          "(line 7); it reads black"}))
         << r->printed();

@@ -31,6 +31,14 @@ TEST(Diagnostics, CaretAtColumnOne) {
     EXPECT_EQ(formatDiagnostic({Severity::Note, "f", {1, 1}, "here"}, src), "f:1:1: note: here\nZap\n^");
 }
 
+// The OpenGL driver's own words are marked as the driver's (issue 19).
+TEST(Diagnostics, TheDriversMessagesSaySo) {
+    SourceTexts src;
+    src.add("g.frag", "    x += t;");
+    EXPECT_EQ(formatDiagnostic({Severity::Warning, "g.frag", {1, 10}, "`t' used uninitialized", true}, src),
+              "g.frag:1:10: warning: `t' used uninitialized [driver]\n    x += t;\n         ^");
+}
+
 TEST(Diagnostics, CaretPastTheEndOfTheLineIsPaddedWithSpaces) {
     SourceTexts src;
     src.add("f", "ab\n");

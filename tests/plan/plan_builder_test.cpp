@@ -378,6 +378,18 @@ TEST_F(PlanTest, MissingFilesSayWhereTheyWereLookedFor) {
     EXPECT_TRUE(p.plan.meshes.empty());
 }
 
+// One mistake, one message (issue 19): a shader named but not found is the
+// error; the Program after it is not also said to have no shaders.
+TEST_F(PlanTest, AMissingShaderIsOneMessageNotTwo) {
+    Planned p = run("Vertex nope.vert\nFragment gone.frag\nProgram P\nQuadXY 0 1\n");
+    EXPECT_EQ(messages(p.diags),
+              (V{"1:8: error: cannot find shader 'nope.vert' (looked in " + lookedIn() + ")",
+                 "2:10: error: cannot find shader 'gone.frag' (looked in " + lookedIn() + ")"}));
+    // A Program with no shader named at all is still told so.
+    Planned none = run("Vertex\nProgram Q\nQuadXY 0 1\n");
+    EXPECT_EQ(messages(none.diags), V{"2:1: warning: Program Q has no shaders; set Vertex and Fragment first"});
+}
+
 TEST_F(PlanTest, IncludeDirsAreSearchedLast) {
     fs::path extra = dir.root() / "extra";
     dir.touch("extra/x.bmp");

@@ -1,0 +1,57 @@
+#include "gl/unset_uniforms.h"
+
+#include <fmt/format.h>
+
+#include "shader/uniform_declaration.h"
+
+namespace glimmer {
+namespace {
+
+bool builtIn(const std::string& name) {
+    return name == "Timer" || name == "Noise2" || name == "Noise3" || name.rfind("glimmer_", 0) == 0 ||
+           name.find('.') != std::string::npos;
+}
+
+// What a student could add to the Program line for a uniform of this type,
+// in GLIB's own forms; empty where no form fits (matrices).
+std::string example(const std::string& name, const std::string& type) {
+    if (type == "float") return fmt::format("{} <0. 1. 1.>", name);
+    if (type == "int") return fmt::format("{} <0 1 10>", name);
+    if (type == "bool") return fmt::format("{} <true>", name);
+    if (type == "vec3" || type == "vec4") return fmt::format("{} {{1. 1. 1.}}", name);
+    if (type == "vec2") return fmt::format("{} [1. 1.]", name);
+    if (type == "ivec2") return fmt::format("{} [1 1]", name);
+    if (type == "ivec3") return fmt::format("{} [1 1 1]", name);
+    if (type == "ivec4") return fmt::format("{} [1 1 1 1]", name);
+    return {};
+}
+
+}  // namespace
+
+void warnUnsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
+                       const std::vector<std::optional<std::string>>& texts, const std::string& scriptFile,
+                       Diagnostics& diags) {
+    for (const auto& u : active) {
+        if (isSamplerType(u.type) || builtIn(u.name)) continue;
+        bool set = false;
+        for (const auto& s : decl.uniforms) set = set || s.name == u.name;
+        if (set) continue;
+        // Where its shader declares it: the first stage that does.
+        std::string where;
+        for (size_t k = 0; k < decl.stages.size() && where.empty(); ++k)
+            if (k < texts.size() && texts[k])
+                if (int line = uniformDeclarationLine(*texts[k], u.name); line > 0)
+                    where = fmt::format(" ({}:{})", decl.stages[k].shown, line);
+        std::string type = uniformTypeName(u.type) + (u.size > 1 ? fmt::format("[{}]", u.size) : "");
+        const bool scalar = u.size == 1 && (type == "float" || type == "int");
+        std::string value = type == "bool" ? "false" : scalar ? "0" : "all 0";
+        std::string add = example(u.name, type);
+        diags.warning(scriptFile, decl.loc,
+                      fmt::format("Program {} reads uniform {} {}{} but the script never sets it, so it stays {}; "
+                                  "give it a value{} on this Program line{}",
+                                  decl.name, type, u.name, where, value, scalar ? " or a slider" : "",
+                                  add.empty() || u.size > 1 ? std::string() : fmt::format(", e.g. '{}'", add)));
+    }
+}
+
+}  // namespace glimmer

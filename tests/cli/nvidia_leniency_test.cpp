@@ -1,0 +1,49 @@
+// What NVIDIA accepted (issue 19): a local const initialised from a
+// non-constant expression compiles (GLSL 4.20 allows it; Mesa does once
+// ARB_shading_language_420pack is on), with a warning that says so; a global
+// one stays an error, with a note that names the cause and the fix.
+#include <gtest/gtest.h>
+
+#include "cli/run_glimmer.h"
+#include "image/image.h"
+
+namespace glimmer_cli {
+namespace {
+
+TEST(CliNvidiaLeniency, ALocalConstFromAUniformIsAcceptedAndSaidSo) {
+    TempDir dir;
+    const std::string shader = cliData("const_local.frag");
+    auto r = runGlimmer({"render", cliData("const_local.glib"), "-o", dir.file("o.png"), "--size", "16x16",
+                         "--backend", "osmesa"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.substr(0, r.err.find("wrote ")),
+              shader + ":7:19: warning: a local const set from a non-constant expression (`k2'): accepted, as GLSL "
+                       "4.20 allows and NVIDIA does in any version; GL_ARB_shading_language_420pack turned on for "
+                       "this shader\n"
+                       "    const float k2 = uK * 2.;\n"
+                       "                  ^\n");
+    // k2 = 2 uK = 1: full red.
+    glimmer::Image img;
+    std::string why;
+    ASSERT_TRUE(glimmer::loadImage(dir.file("o.png"), img, why)) << why;
+    EXPECT_EQ(img.u8[(8 * 16 + 8) * 4 + 0], 255);
+    EXPECT_EQ(img.u8[(8 * 16 + 8) * 4 + 1], 128);
+}
+
+TEST(CliNvidiaLeniency, AGlobalConstFromAUniformStaysAnErrorWithItsFix) {
+    const std::string shader = cliData("const_global.frag");
+    auto r = runGlimmer({"check", cliData("const_global.glib"), "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(r.err, shader + ":5:18: error: initializer of const variable `k2' must be a constant expression [driver]\n"
+                              "const float k2 = uK * 2.;\n"
+                              "                 ^\n" +
+                         shader + ":5:18: note: `k2' is a const outside any function: its initialiser must be a "
+                                  "constant expression in every GLSL version (4.20 relaxed it only inside functions); "
+                                  "remove 'const' and it is set when the shader starts\n"
+                                  "const float k2 = uK * 2.;\n"
+                                  "                 ^\n"
+                                  "1 error, 0 warnings\n");
+}
+
+}  // namespace
+}  // namespace glimmer_cli

@@ -1,0 +1,41 @@
+// Uniforms the shaders read but the script never sets (issue 19): each is
+// named with its shader's file and line, the value it keeps (0), and where a
+// value or slider for it would go.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "cli/run_glimmer.h"
+
+namespace glimmer_cli {
+namespace {
+
+TEST(CliUnsetUniforms, EachIsNamedWithItsDeclarationAndWhereItsValueGoes) {
+    const std::string script = cliData("unset_uniforms.glib");
+    auto r = runGlimmer({"check", script, "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err,
+              script + ":7:1: warning: Program Lit reads uniform float uKd (unset_uniforms.frag:5) but the script "
+                       "never sets it, so it stays 0; give it a value or a slider on this Program line, e.g. "
+                       "'uKd <0. 1. 1.>'\n"
+                       "Program Lit uKa <0. .2 1.>\n"
+                       "^\n" +
+                  script + ":7:1: warning: Program Lit reads uniform vec3 uColor (unset_uniforms.frag:6) but the "
+                           "script never sets it, so it stays all 0; give it a value on this Program line, e.g. "
+                           "'uColor {1. 1. 1.}'\n"
+                           "Program Lit uKa <0. .2 1.>\n"
+                           "^\n");
+}
+
+TEST(CliUnsetUniforms, SettingThemSilencesIt) {
+    TempDir dir;
+    const std::string script = dir.file("set.glib");
+    std::ofstream(script) << "Vertex st.vert\nFragment unset_uniforms.frag\n"
+                             "Program Lit uKa <0. .2 1.> uKd <0. 1. 1.> uColor {1 1 1}\nQuadXY 0 1\n";
+    auto r = runGlimmer({"check", script, "--backend", "osmesa", "-I", cliData("")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "") << r.err;
+}
+
+}  // namespace
+}  // namespace glimmer_cli
