@@ -77,14 +77,19 @@ pictures="$(mktemp -d)"
 trap 'rm -rf "$profile" "$pictures"' EXIT
 # An ES scene (drawn as written) and the seed bloom and a glman classroom
 # scene (desktop GLSL, translated in the page by glslang and SPIRV-Cross).
-for case in "tests/data/web/lit_es.glib|" "tests/data/web/lit_es.glib|uStripes=3" \
-            "scripts/bloom.glib|uAdd=2" "tests/data/web/compat_scene.glib|"; do
-  script="${case%%|*}" sets="${case#*|}"
+# The seed bloom at its grid texture's own size, 512x512: at 256x256 the
+# 2:1 minification samples the grid exactly between texels, where the two
+# rasterizers may each take either neighbour (948 one-pixel grid-line
+# edges, 1.4%, PSNR 49.7 dB: the same class of tie as an edge on a pixel
+# centre, but over a whole line).
+for case in "tests/data/web/lit_es.glib||256x256" "tests/data/web/lit_es.glib|uStripes=3|256x256" \
+            "scripts/bloom.glib|uAdd=2|512x512" "tests/data/web/compat_scene.glib||256x256"; do
+  IFS='|' read -r script sets size <<<"$case"
   desk="$pictures/desktop.png" shot="$pictures/page.png"
   args=(); [ -n "$sets" ] && args=(--set "$sets")
-  "$g" -q render "$script" --size 256x256 "${args[@]}" -o "$desk"
-  echo "  page against render: $script ${sets:-(defaults)}"
-  if page_picture "$script" 256x256 "$sets" "$shot" && same_picture "$shot" "$desk"; then
+  "$g" -q render "$script" --size "$size" "${args[@]}" -o "$desk"
+  echo "  page against render: $script ${sets:-(defaults)} at $size"
+  if page_picture "$script" "$size" "$sets" "$shot" && same_picture "$shot" "$desk"; then
     passed=$((passed + 1))
   else
     failed=$((failed + 1))
