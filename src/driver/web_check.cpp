@@ -7,23 +7,9 @@
 #include "driver/prepare_script.h"
 #include "gl/shader_build.h"
 #include "plan/uniform_values.h"
-#include "shader/web_translate.h"
+#include "shader/web_stage.h"
 
 namespace glimmer {
-namespace {
-
-WebStage webStage(ShaderStage::Kind kind) {
-    switch (kind) {
-    case ShaderStage::Kind::Vertex: return WebStage::Vertex;
-    case ShaderStage::Kind::Fragment: return WebStage::Fragment;
-    case ShaderStage::Kind::Geometry: return WebStage::Geometry;
-    case ShaderStage::Kind::TessControl: return WebStage::TessControl;
-    case ShaderStage::Kind::TessEvaluation: return WebStage::TessEvaluation;
-    }
-    return WebStage::Vertex;
-}
-
-}  // namespace
 
 bool checkProgramsForWeb(const LoadedScript& script, Diagnostics& diags) {
     const int errorsBefore = diags.errorCount();

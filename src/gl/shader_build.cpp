@@ -8,7 +8,7 @@
 
 #include <fmt/format.h>
 
-#include "shader/web_translate.h"
+#include "shader/web_stage.h"
 
 namespace glimmer {
 
@@ -79,17 +79,6 @@ GLenum stageEnum(ShaderStage::Kind k) {
     case ShaderStage::Kind::TessEvaluation: return GL_TESS_EVALUATION_SHADER;
     }
     return GL_VERTEX_SHADER;
-}
-
-WebStage webStage(ShaderStage::Kind k) {
-    switch (k) {
-    case ShaderStage::Kind::Vertex: return WebStage::Vertex;
-    case ShaderStage::Kind::Fragment: return WebStage::Fragment;
-    case ShaderStage::Kind::Geometry: return WebStage::Geometry;
-    case ShaderStage::Kind::TessControl: return WebStage::TessControl;
-    case ShaderStage::Kind::TessEvaluation: return WebStage::TessEvaluation;
-    }
-    return WebStage::Vertex;
 }
 
 std::string infoLog(const GlApi& gl, unsigned object, bool isProgram) {
