@@ -144,9 +144,16 @@ TEST(ViewerLesson, PanelIsBesideThePictureWhichKeepsItsExactPixels) {
     ASSERT_TRUE(v.waitForLog("glimmer view: ui scale")) << v.log();
     auto x = findViewer(p.dir);
     ASSERT_TRUE(x) << v.log();
-    std::this_thread::sleep_for(1s);  // the window grows to hold the panel
+    // The window resizes as the panel shows or hides: wait until it has,
+    // for a while (a fixed second was not always enough on a busy machine).
     int w = 0, h = 0;
-    ASSERT_TRUE(windowSize(*x, w, h));
+    auto settle = [&](auto done) {
+        for (auto end = std::chrono::steady_clock::now() + 10s; std::chrono::steady_clock::now() < end;
+             std::this_thread::sleep_for(100ms))
+            if (windowSize(*x, w, h) && done()) return true;
+        return windowSize(*x, w, h);
+    };
+    ASSERT_TRUE(settle([&] { return w > 256 + 200; }));  // the window grows to hold the panel
     EXPECT_GT(w, 256 + 200);  // a panel of readable width beside the picture
     EXPECT_GE(h, 256);
     ASSERT_EQ(glimmer("render " + (p.dir / "bloom.glib").string() + " --size 256x256 --set uAdd=2 -o " +
@@ -157,13 +164,11 @@ TEST(ViewerLesson, PanelIsBesideThePictureWhichKeepsItsExactPixels) {
     EXPECT_EQ(maxDiffAtTopLeft(shot, load(p.dir / "render.png")), 0);
 
     xdotool(*x, "mousemove --window " + x->window + " 128 128 key h");
-    std::this_thread::sleep_for(1s);
-    ASSERT_TRUE(windowSize(*x, w, h));
+    ASSERT_TRUE(settle([&] { return w == 256; }));
     EXPECT_EQ(w, 256);
     EXPECT_EQ(h, 256);
     xdotool(*x, "mousemove --window " + x->window + " 128 128 key h");
-    std::this_thread::sleep_for(1s);
-    ASSERT_TRUE(windowSize(*x, w, h));
+    ASSERT_TRUE(settle([&] { return w > 256 + 200; }));
     EXPECT_GT(w, 256 + 200);
     EXPECT_EQ(v.quit(), 0) << v.log();
 }
