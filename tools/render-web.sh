@@ -42,7 +42,7 @@ page="$(realpath "$web")/src/web/index.html"
 url="$(python3 -c 'import sys, urllib.parse as u; print("file://" + sys.argv[1] + "?" + u.urlencode({"lesson": "file://" + sys.argv[2], "render": sys.argv[3], "size": sys.argv[4], "set": sys.argv[5], "frames": sys.argv[6]}))' \
   "$page" "$work/lesson.js" "$inner" "$size" "$sets" "${frames:-0}")"
 if [ -n "$frames" ]; then
-  node --experimental-websocket "$here/tools/page-figures.mjs" "$url"
+  NODE_PATH=/usr/share/nodejs node "$here/tools/page-figures.mjs" "$url"
   exit
 fi
 timeout 120 chromium --headless=new --no-sandbox --user-data-dir="$work/profile" --use-angle=swiftshader \

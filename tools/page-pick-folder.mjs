@@ -1,0 +1,40 @@
+// A user picking a folder on the page, as a test can do it: opens the page,
+// hands FOLDER to its folder button (the DevTools protocol sets a directory
+// on a webkitdirectory input as the browser's dialog would), waits for the
+// page to draw the folder's first script, and writes that picture to
+// OUT.png. Prints the verdict and the diagnostics; exits with the page's
+// status (0 drawn, 1 script errors, 2 refused).
+//   NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs PAGE_URL FOLDER OUT.png
+import { writeFileSync } from "node:fs";
+import { openPage, sleep } from "./cdp-page.mjs";
+
+const [url, folder, out] = process.argv.slice(2);
+if (!out) {
+  console.error("usage: NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs PAGE_URL FOLDER OUT.png");
+  process.exit(2);
+}
+const page = await openPage(url);
+await page.navigate();
+const doc = await page.send("DOM.getDocument");
+const input = await page.send("DOM.querySelector", { nodeId: doc.result.root.nodeId, selector: "#folder" });
+const set = await page.send("DOM.setFileInputFiles", { nodeId: input.result.nodeId, files: [folder] });
+if (set.error) { console.error("cannot pick the folder: " + set.error.message); page.close(1); }
+// The page answers a picked folder by drawing (or refusing) it: wait for
+// the verdict to change from the page's start.
+let result;
+for (let i = 0; i < 600 && !result; ++i) {
+  result = await page.evaluate(`(() => {
+    const v = document.getElementById("verdict");
+    if (!v.dataset.exit || !/^(yours|refused|[^:]*\\.glib:)/.test(v.textContent)) return null;
+    return { exit: Number(v.dataset.exit), verdict: v.textContent,
+             diagnostics: document.getElementById("diagnostics").textContent,
+             png: document.getElementById("picture").dataset.png || "" };
+  })()`);
+  if (!result) await sleep(100);
+}
+if (!result) { console.error("the page did not answer the picked folder"); page.close(1); }
+console.log(result.verdict);
+process.stdout.write(result.diagnostics);
+if (result.exit === 0 && result.png.startsWith("data:image/png;base64,"))
+  writeFileSync(out, Buffer.from(result.png.slice("data:image/png;base64,".length), "base64"));
+page.close(result.exit);
