@@ -2,13 +2,14 @@
 // hands FOLDER to its folder button (the DevTools protocol sets a directory
 // on a webkitdirectory input as the browser's dialog would), waits for the
 // page to draw the folder's first script, and writes that picture to
-// OUT.png. Prints the verdict and the diagnostics; exits with the page's
-// status (0 drawn, 1 script errors, 2 refused).
-//   NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs PAGE_URL FOLDER OUT.png
-import { writeFileSync } from "node:fs";
+// OUT.png. With SAVE_DIR, then presses Save PNG with downloads going to
+// SAVE_DIR and waits for the file. Prints the verdict and the diagnostics;
+// exits with the page's status (0 drawn, 1 script errors, 2 refused).
+//   NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs PAGE_URL FOLDER OUT.png [SAVE_DIR]
+import { existsSync, readdirSync, writeFileSync } from "node:fs";
 import { openPage, sleep } from "./cdp-page.mjs";
 
-const [url, folder, out] = process.argv.slice(2);
+const [url, folder, out, saveDir] = process.argv.slice(2);
 if (!out) {
   console.error("usage: NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs PAGE_URL FOLDER OUT.png");
   process.exit(2);
@@ -37,4 +38,13 @@ console.log(result.verdict);
 process.stdout.write(result.diagnostics);
 if (result.exit === 0 && result.png.startsWith("data:image/png;base64,"))
   writeFileSync(out, Buffer.from(result.png.slice("data:image/png;base64,".length), "base64"));
+if (saveDir && result.exit === 0) {
+  await page.send("Page.setDownloadBehavior", { behavior: "allow", downloadPath: saveDir });
+  await page.evaluate(`document.getElementById("save").click()`);
+  // Chromium writes NAME.crdownload, then renames it when done.
+  const done = () => existsSync(saveDir) && readdirSync(saveDir).some((f) => f.endsWith(".png"));
+  for (let i = 0; i < 100 && !done(); ++i) await sleep(100);
+  if (!done()) { console.error("Save PNG downloaded nothing"); page.close(1); }
+  console.log("saved: " + readdirSync(saveDir).filter((f) => f.endsWith(".png")).join(" "));
+}
 page.close(result.exit);

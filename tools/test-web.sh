@@ -136,12 +136,21 @@ sed '/WireTeapot/d' tests/data/glman/teapot.glib > "$pictures/picked/teapot.glib
 cp tests/data/glman/pass.vert tests/data/glman/lit.frag "$pictures/picked/"
 "$g" -q render "$pictures/picked/teapot.glib" --size 512x512 -o "$pictures/picked_desktop.png"
 echo "  a picked glman folder against render"
-if NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs "file://$page" "$pictures/picked" "$pictures/picked.png" >/dev/null 2>&1 \
+mkdir "$pictures/downloads"
+if NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs "file://$page" "$pictures/picked" "$pictures/picked.png" \
+     "$pictures/downloads" >/dev/null 2>&1 \
    && same_picture "$pictures/picked.png" "$pictures/picked_desktop.png"; then
   passed=$((passed + 1))
 else
   failed=$((failed + 1))
   echo "DIFFERS: the picked folder did not draw render's picture"
+fi
+# Its Save PNG button downloaded that picture, named after the script.
+if cmp -s "$pictures/downloads/teapot.png" "$pictures/picked.png"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: Save PNG did not download the picture as teapot.png ($(ls "$pictures/downloads"))"
 fi
 
 # A lesson whose file would leave the page's /user folder is refused as a

@@ -143,6 +143,16 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     ctx.putImageData(img, 0, 0);
     picture.dataset.png = copy.toDataURL("image/png");
   };
+  // Save PNG downloads the last picture as SCRIPT.png, the name `glimmer
+  // render` users give it (the browser asks where, or puts it in Downloads).
+  const save = document.getElementById("save");
+  let savedName = "glimmer.png";
+  save.onclick = () => {
+    const link = document.createElement("a");
+    link.href = picture.dataset.png;
+    link.download = savedName;
+    link.click();
+  };
   const runRender = (value, width, height, sets) => {
     const [root, path] = locate(value);
     FS.chdir(root);
@@ -150,8 +160,10 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     canvas.height = height || 512;
     const exit = render(path, width, height, sets);
     report(path, exit, "drawn");
+    save.disabled = exit !== 0;
     if (exit === 0) {
       keepPicture();
+      savedName = path.split("/").pop().replace(/\.glib$/, "") + ".png";
       // Since the page began to load: what a user waits for the first picture.
       if (!document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
     }
