@@ -144,13 +144,20 @@ TEST(ViewerLesson, PanelIsBesideThePictureWhichKeepsItsExactPixels) {
     ASSERT_TRUE(v.waitForLog("glimmer view: ui scale")) << v.log();
     auto x = findViewer(p.dir);
     ASSERT_TRUE(x) << v.log();
-    // The window resizes as the panel shows or hides: wait until it has,
-    // for a while (a fixed second was not always enough on a busy machine).
+    // The window resizes as the panel shows or hides, over a few frames
+    // (552 then 578 wide, once): wait until it has the wanted size and has
+    // kept it for half a second, for up to 10 s (a fixed second was not
+    // always enough on a busy machine).
     int w = 0, h = 0;
     auto settle = [&](auto done) {
+        int lastW = -1, lastH = -1, steady = 0;
         for (auto end = std::chrono::steady_clock::now() + 10s; std::chrono::steady_clock::now() < end;
-             std::this_thread::sleep_for(100ms))
-            if (windowSize(*x, w, h) && done()) return true;
+             std::this_thread::sleep_for(100ms)) {
+            if (!windowSize(*x, w, h)) continue;
+            steady = (w == lastW && h == lastH) ? steady + 1 : 0;
+            lastW = w, lastH = h;
+            if (done() && steady >= 5) return true;
+        }
         return windowSize(*x, w, h);
     };
     ASSERT_TRUE(settle([&] { return w > 256 + 200; }));  // the window grows to hold the panel
