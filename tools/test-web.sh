@@ -22,11 +22,16 @@ page="$(realpath "$web")/src/web/index.html"
 profile="$(mktemp -d)"
 trap 'rm -rf "$profile"' EXIT
 passed=0 failed=0
+# The DOM of the page at URL once it has run (SwiftShader's WebGL 2, virtual
+# time); further arguments are Chromium flags: --allow-file-access-from-files
+# where the page reads files beside it (a packed lesson must open without).
+page_dom() {
+  timeout 60 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
+    --enable-unsafe-swiftshader --virtual-time-budget=10000 "${@:2}" --dump-dom "$1" 2>/dev/null
+}
 # What the page shows for ?check=PATH: "EXIT\nDIAGNOSTICS", read from the DOM.
 in_browser() {
-  timeout 60 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
-    --enable-unsafe-swiftshader --allow-file-access-from-files --virtual-time-budget=10000 \
-    --dump-dom "file://$page?check=$1" 2>/dev/null |
+  page_dom "file://$page?check=$1" --allow-file-access-from-files |
     python3 -c '
 import html, re, sys
 dom = sys.stdin.read()
@@ -111,8 +116,7 @@ fi
 mkdir "$pictures/lesson"
 cp tests/data/web/lit_es.* "$pictures/lesson/"
 python3 tools/web_lesson.py pack "$pictures/lesson" "$web/src/web" --html "$pictures/lesson.html" >/dev/null
-timeout 60 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
-  --enable-unsafe-swiftshader --virtual-time-budget=10000 --dump-dom "file://$pictures/lesson.html" 2>/dev/null |
+page_dom "file://$pictures/lesson.html" |
   python3 -c '
 import base64, re, sys
 m = re.search(r"data-png=\"data:image/png;base64,([^\"]*)\"", sys.stdin.read())
@@ -156,9 +160,8 @@ fi
 # A lesson whose file would leave the page's /user folder is refused as a
 # whole, with the reason, and nothing is drawn.
 printf 'globalThis.glimmerLesson = {"files": {"a.glib": "", "../escape.glib": ""}};\n' > "$pictures/hostile.js"
-verdict="$(timeout 60 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
-  --enable-unsafe-swiftshader --allow-file-access-from-files --virtual-time-budget=10000 \
-  --dump-dom "file://$page?lesson=file://$pictures/hostile.js" 2>/dev/null | grep -o '<p id="verdict"[^<]*')"
+verdict="$(page_dom "file://$page?lesson=file://$pictures/hostile.js" --allow-file-access-from-files |
+  grep -o '<p id="verdict"[^<]*')"
 if grep -q 'data-exit="2"' <<<"$verdict" && grep -Eq 'refused: the path ("|&quot;)\.\./escape\.glib("|&quot;) leaves the folder' <<<"$verdict"; then
   passed=$((passed + 1))
 else
