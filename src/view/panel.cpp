@@ -8,8 +8,8 @@
 #include <imgui.h>
 
 #include "plan/limits.h"
+#include "view/panel.h"
 #include "view/view_model.h"
-#include "view/viewer.h"
 
 namespace glimmer {
 namespace {
@@ -64,6 +64,8 @@ void control(ViewerState& s, const UniformControl& c) {
         ImGui::TextDisabled("%s = %s", u.name.c_str(), valuesText(v).c_str());
         break;
     }
+    ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    s.controlRects[u.name] = {at.x, at.y, size.x, size.y};
     if (changed)
         for (int q : c.programs) s.values->set(q, u.name, v);
     if (c.programs.size() > 1 && ImGui::BeginPopupContextItem(label.c_str())) {
@@ -218,6 +220,7 @@ std::string overlayText(const ViewerState& s) {
 
 std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<int, unsigned>>& thumbnails) {
     std::vector<ViewCommand> asked;
+    s.controlRects.clear();
     float em = ImGui::GetFontSize();
     ImGui::PushItemWidth(em * 11);  // a fixed width: the panel's width follows its content
     ImGui::PushTextWrapPos(em * 30);
@@ -268,7 +271,7 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
     } else {
         ImGui::TextDisabled("a flat picture: the mouse does not turn it");
     }
-    ImGui::TextDisabled("H hides this panel, F fullscreen, Q quits");
+    if (!s.keyHint.empty()) ImGui::TextDisabled("%s", s.keyHint.c_str());
 
     if (s.good) {
         const Plan& plan = s.good->plan;

@@ -19,12 +19,15 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "backends/glfw_window.h"
 #include "driver/options.h"
 #include "driver/prepare_script.h"
 #include "gl/ui_texture.h"
 #include "gl/window_frame.h"
 #include "image/ttf_text.h"
 #include "plan/dependencies.h"
+#include "view/file_watch.h"
+#include "view/panel.h"
 #include "view/view_model.h"
 #include "view/wakeups.h"
 
@@ -58,7 +61,9 @@ double sliceBudgetMs() {
 class Viewer {
 public:
     Viewer(const ViewOptions& o, GlfwWindow& window, int width, int height)
-        : options_(o), window_(window), width_(width), height_(height), reqW_(width), reqH_(height) {}
+        : options_(o), window_(window), width_(width), height_(height), reqW_(width), reqH_(height) {
+        s_.keyHint = "H hides this panel, F fullscreen, Q quits";
+    }
 
     // The script at w x h, parsed, planned and prepared on a renderer of its
     // own. False (with diagnostics) when anything failed; `renderer` is then null.
@@ -81,21 +86,13 @@ public:
     // reload does not repeat the seed's warnings every time), and keeps both
     // for the panel.
     void report(const Diagnostics& diags, const SourceTexts& sources) {
-        s_.errors.clear();
-        s_.warnings.clear();
+        keepMessages(s_, diags, sources);
         std::string errors, warnings;
         int repeated = 0;
-        for (const auto& d : diags.all()) {
-            std::string text = formatDiagnostic(d, sources);
-            std::string where = d.loc.line > 0 ? fmt::format("{}:{}", d.file, d.loc.line) : d.file;
-            if (d.severity == Severity::Error) {
-                s_.errors.push_back({text, where});
-                errors += text + "\n";
-            } else {
-                s_.warnings.push_back({text, where});
-                if (printedWarnings_.insert(text).second) warnings += text + "\n";
-                else ++repeated;
-            }
+        for (const auto& e : s_.errors) errors += e.text + "\n";
+        for (const auto& w : s_.warnings) {
+            if (printedWarnings_.insert(w.text).second) warnings += w.text + "\n";
+            else ++repeated;
         }
         std::cerr << errors << warnings;
         if (!s_.errors.empty() || !warnings.empty())
@@ -120,26 +117,9 @@ public:
             std::cerr << "glimmer view: " << s_.status << "\n";
             return;
         }
-        UniformValues values(next.plan);
-        if (s_.good && s_.values) values.carryOver(s_.good->plan, *s_.values, next.plan);
-        else
-            for (const auto& a : options_.sets) values.applySet(next.plan, a, diags);
-        bool first = !s_.good;
-        s_.good = std::move(next);
+        adoptScript(s_, std::move(next), std::move(renderer), options_.sets, diags);
         drawing_.reset();  // its passes belong to the old plan
         firstFrame_ = true;
-        s_.drawing = -1;
-        s_.renderer = std::move(renderer);
-        s_.values = values;
-        s_.drawnWith.reset();
-        s_.failed = false;
-        s_.drawAll = true;
-        s_.pictureW = s_.good->plan.width;
-        s_.pictureH = s_.good->plan.height;
-        if (first || s_.hardcopyAspect) sizeWithAspect(s_.pictureW, s_.pictureH, 1920, s_.hardcopy[0], s_.hardcopy[1]);
-        s_.turns = sceneTurns(s_.good->plan);
-        if (!s_.turns) resetView();
-        if (s_.shownTexture >= int(s_.good->plan.textures.size())) s_.shownTexture = -1;
         s_.status = why;
         std::cerr << "glimmer view: " << why << "\n";
     }
@@ -268,16 +248,9 @@ private:
     }
 
     void presentPicture(int fbw, int fbh) {
-        if (!s_.renderer) return;
         int x, y, w, h;
         pictureRect(fbw, fbh, x, y, w, h);
-        if (s_.compare) {
-            float d = std::clamp(s_.divider, 0.f, 1.f);
-            s_.renderer->presentIn(s_.compareLeft, fbh, x, y, w, h, 0.f, d);
-            s_.renderer->presentIn(s_.compareRight, fbh, x, y, w, h, d, 1.f);
-        } else {
-            s_.renderer->presentIn(s_.shownTexture, fbh, x, y, w, h);
-        }
+        glimmer::presentPicture(s_, fbh, x, y, w, h);
     }
 
     // The window holds the picture and the panel beside it. A size the user
@@ -397,18 +370,6 @@ private:
         if (list != watch_.paths()) watch_.watch(list);
     }
 
-    glm::mat4 sceneMatrix() const {
-        glm::mat4 m = glm::scale(glm::mat4(1.f), glm::vec3(s_.zoom));
-        m = glm::rotate(m, glm::radians(s_.pitch), glm::vec3(1, 0, 0));
-        return glm::rotate(m, glm::radians(s_.yaw), glm::vec3(0, 1, 0));
-    }
-
-    void resetView() {
-        s_.yaw = s_.pitch = 0;
-        s_.zoom = 1;
-        s_.sceneMoved = true;
-    }
-
     // Keys, when no text field has the keyboard. True: quit.
     bool keys() {
         ImGuiIO& io = ImGui::GetIO();
@@ -420,7 +381,7 @@ private:
         if (pressed(GLFW_KEY_SPACE)) s_.playing = !s_.playing;
         if (pressed(GLFW_KEY_H)) s_.panelShown = !s_.panelShown;
         if (pressed(GLFW_KEY_R)) load("reloaded");
-        if (pressed(GLFW_KEY_0) || pressed(GLFW_KEY_KP_0)) resetView();
+        if (pressed(GLFW_KEY_0) || pressed(GLFW_KEY_KP_0)) resetView(s_);
         if (pressed(GLFW_KEY_S)) save(nextFreeName("glimmer", ".png"), false);
         if (pressed(GLFW_KEY_F)) toggleFullscreen();
         return false;
@@ -452,26 +413,8 @@ private:
         glfwGetCursorPos(w, &x, &y);
         int px, py, pw, ph;
         pictureRect(fbw, fbh, px, py, pw, ph);
-        bool over = x >= px && x < px + pw && y >= py && y < py + ph && !io.WantCaptureMouse;
         bool down = glfwGetMouseButton(w, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
-        if (s_.compare) {  // the divider follows a drag
-            if (down && (dragging_ || over)) s_.divider = std::clamp(float((x - px) / std::max(pw, 1)), 0.f, 1.f);
-            dragging_ = down && (dragging_ || over);
-        } else {
-            if (down && dragging_ && s_.turns) {
-                s_.yaw += float(x - lastX_) * 0.4f;
-                s_.pitch += float(y - lastY_) * 0.4f;
-                s_.sceneMoved = true;
-            }
-            dragging_ = down && (dragging_ || over);
-            if (over && s_.turns && io.MouseWheel != 0) {
-                s_.zoom = std::clamp(s_.zoom * std::pow(1.1f, io.MouseWheel), 0.05f, 20.f);
-                s_.sceneMoved = true;
-            }
-        }
-        lastX_ = x;
-        lastY_ = y;
-        if (s_.renderer) s_.renderer->setSceneTransform(sceneMatrix());
+        bool over = pointerOnPicture(s_, drag_, x, y, down, io.MouseWheel, io.WantCaptureMouse, px, py, pw, ph);
         probe(over && !down, x - px, y - py, pw, ph);
     }
 
@@ -528,16 +471,12 @@ private:
     void renderScene(double budgetMs) {
         if (!s_.renderer || !s_.good) return;
         const Plan& plan = s_.good->plan;
-        Change change;
-        change.everything = s_.drawAll;
-        change.screen = s_.sceneMoved;
-        s_.sceneMoved = false;
-        if (s_.drawnWith) change.programs = s_.values->programsDifferingFrom(*s_.drawnWith);
+        Change change = changeSinceDrawn(s_, false);
         // Time alone never replaces a frame under way: a heavy animated scene
         // would otherwise restart every window frame and never finish one.
         if (s_.time != s_.drawnTime && (!drawing_ || !change.programs.empty() || change.screen || change.everything))
-            for (size_t p = 0; p < plan.programs.size(); ++p)
-                if (s_.renderer->usesTimer(int(p))) change.programs.insert(int(p));
+            change = changeSinceDrawn(s_, true);
+        s_.sceneMoved = false;
         std::vector<bool> only = passesToRun(plan, change);
         bool any = false;
         for (bool b : only) any |= b;
@@ -720,7 +659,7 @@ private:
         if (!prepareAt(w, h, ls, r, diags)) return {};
         UniformValues v(ls.plan);
         v.carryOver(s_.good->plan, *s_.values, ls.plan);
-        r->setSceneTransform(sceneMatrix());
+        r->setSceneTransform(sceneMatrix(s_));
         r->render(v, s_.time);
         return r->readScreen();
     }
@@ -739,8 +678,7 @@ private:
     Clock::time_point lastHealth_{};
     std::string lastReport_;
     std::set<std::string> printedWarnings_;
-    bool dragging_ = false;
-    double lastX_ = 0, lastY_ = 0;
+    PictureDrag drag_;
     std::uint64_t pictureVersion_ = 0, probeVersion_ = ~0ull;
     int probeTexture_ = -2;
     Image probeImage_;
