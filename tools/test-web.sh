@@ -9,7 +9,10 @@
 #   and with a value set as --set sets it (which must change the picture),
 #   the seed bloom and a compatibility scene through the page's translation;
 # - a packed lesson opens from disk; a picked glman folder draws; a hostile
-#   lesson is refused.
+#   lesson is refused;
+# - the live view's sliders, moved with the mouse, redraw only the passes
+#   they reach and give render's picture with --set; a broken shader edit
+#   shows its error and keeps the picture and the values.
 # Builds the web module first (tools/build-web.sh).
 # Usage: tools/test-web.sh [DESKTOP_GLIMMER] [WEB_BUILD_DIR]
 #        (default build/src/app/glimmer, build-web)
@@ -155,6 +158,48 @@ if cmp -s "$pictures/downloads/teapot.png" "$pictures/picked.png"; then
 else
   failed=$((failed + 1))
   echo "DIFFERS: Save PNG did not download the picture as teapot.png ($(ls "$pictures/downloads"))"
+fi
+
+# The live view, as a student uses it (tools/page-live-view.mjs): the
+# seed bloom with the desktop's panel beside it; each slider dragged with
+# the mouse redraws only the passes it reaches (uAdd: the Bloom pass, 1;
+# uHalfSize: the SuperBlur pass and the Bloom pass reading it, 0 and 1) and
+# gives render's picture with --set at the value the slider shows; then a
+# typo in bloom.frag is an error at its line and column, and the picture
+# and the slider values stay; fixing the typo clears the error.
+mkdir "$pictures/live"
+echo "  the live view: sliders, a broken shader edit"
+live="$(NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs "file://$page" scripts/bloom.glib \
+          /lesson/shaders/bloom.frag 13 "$pictures/live" uAdd=0.5 uHalfSize=0.3 2>&1)"
+field() { python3 -c 'import json, sys; r = json.loads(sys.argv[1]); print(eval(sys.argv[2], {}, r))' "$live" "$1" 2>/dev/null; }
+add="$(field 'sliders[0]["value"]')" half="$(field 'sliders[1]["value"]')"
+if [ "$(field 'sliders[0]["drawn"]')" = "1" ] && [ "$(field 'sliders[1]["drawn"]')" = "0 1" ]; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: the passes a slider redrew (uAdd: want 1, uHalfSize: want 0 1): $live"
+fi
+"$g" -q render scripts/bloom.glib --size 512x512 --set "uAdd=$add" -o "$pictures/live_add.png"
+"$g" -q render scripts/bloom.glib --size 512x512 --set "uAdd=$add" --set "uHalfSize=$half" -o "$pictures/live_half.png"
+for pair in "slider-uAdd.png|live_add.png|uAdd=$add" "slider-uHalfSize.png|live_half.png|uAdd=$add uHalfSize=$half"; do
+  IFS='|' read -r shot desk what <<<"$pair"
+  if [ -n "$add" ] && [ "$add" != 0 ] && [ -n "$half" ] && [ "$half" != 0 ] &&
+     same_picture "$pictures/live/$shot" "$pictures/$desk"; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "DIFFERS: the live view after its slider ($what) is not render's picture with --set"
+  fi
+done
+want="shaders/bloom.frag:13:52: error: 'undeclaredTypo': undeclared identifier"
+if [ "$(field 'broken["exit"]')" = 1 ] && [ "$(field 'broken["errors"]')" = 1 ] &&
+   grep -qF "$want" <<<"$(field 'broken["diagnostics"]')" && [ "$(field 'broken["value"]')" = "$add" ] &&
+   cmp -s "$pictures/live/broken.png" "$pictures/live/slider-uHalfSize.png" &&
+   [ "$(field 'restored["exit"]')" = 0 ] && [ "$(field 'restored["errors"]')" = 0 ]; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: a broken shader edit must show '$want', keep the picture and the values, and clear when fixed: $live"
 fi
 
 # A lesson whose file would leave the page's /user folder is refused as a

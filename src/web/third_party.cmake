@@ -72,3 +72,15 @@ set(SPIRV_CROSS_SKIP_INSTALL ON CACHE BOOL "" FORCE)
 add_subdirectory(${third_party}/spirv-cross-2021.01.15+1.3.239.0 ${third_party}/spirv-cross-build EXCLUDE_FROM_ALL)
 # <spirv_glsl.hpp>, as Debian's spirv_cross_glsl target gives it.
 target_include_directories(spirv-cross-core INTERFACE ${third_party}/spirv-cross-2021.01.15+1.3.239.0)
+
+# Dear ImGui for the page's panel: the desktop links Debian's libimgui
+# (1.86); the page compiles the same version's core and its OpenGL 3
+# backend (which takes its GLSL ES 3.00 path under Emscripten) from the
+# source package. The page's input comes from the canvas (web_view_input.cpp),
+# not from a GLFW port: see docs/browser.md.
+glimmer_debian_source(imgui=1.86+ds-1 imgui-1.86+ds)
+set(imgui_dir ${third_party}/imgui-1.86+ds)
+add_library(web_imgui STATIC ${imgui_dir}/imgui.cpp ${imgui_dir}/imgui_draw.cpp ${imgui_dir}/imgui_tables.cpp
+            ${imgui_dir}/imgui_widgets.cpp ${imgui_dir}/backends/imgui_impl_opengl3.cpp)
+# <imgui.h> and <backends/imgui_impl_opengl3.h>, as the desktop includes them.
+target_include_directories(web_imgui SYSTEM PUBLIC ${imgui_dir})

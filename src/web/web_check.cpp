@@ -15,13 +15,14 @@
 
 #include "driver/console.h"
 #include "driver/load_script.h"
+#include "web/page_state.h"
 
 namespace {
 std::string lastOutput;
 }
 
 namespace glimmer_web {
-// web_render.cpp reports through the same glimmer_last_output.
+// web_render.cpp and web_view.cpp report through the same glimmer_last_output.
 void setLastOutput(std::string text) { lastOutput = std::move(text); }
 }  // namespace glimmer_web
 

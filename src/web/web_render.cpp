@@ -31,10 +31,7 @@
 #include "driver/prepare_script.h"
 #include "image/image.h"
 #include "plan/uniform_values.h"
-
-namespace glimmer_web {
-void setLastOutput(std::string text);  // web_check.cpp
-}
+#include "web/page_state.h"
 
 namespace {
 
@@ -45,6 +42,19 @@ glimmer::Image lastPicture;
 std::unique_ptr<glimmer::Renderer> lastRenderer;
 std::unique_ptr<glimmer::UniformValues> lastValues;
 
+}  // namespace
+
+namespace glimmer_web {
+
+glimmer::GlContext* pageContext(std::string* why) {
+    std::string reason;
+    if (!context) context = glimmer::createWebGl2Context("#canvas", reason);
+    if (!context && why) *why = reason;
+    return context.get();
+}
+
+glimmer::Image& pagePicture() { return lastPicture; }
+
 std::vector<std::string> splitSets(const std::string& text) {
     std::vector<std::string> out;
     std::string item;
@@ -54,7 +64,7 @@ std::vector<std::string> splitSets(const std::string& text) {
     return out;
 }
 
-}  // namespace
+}  // namespace glimmer_web
 
 extern "C" {
 
@@ -76,11 +86,10 @@ EMSCRIPTEN_KEEPALIVE int glimmer_render(const char* path, int width, int height,
     if (!loadScript(path ? path : "", options, diags, loaded)) return finish(2);
     if (diags.hasErrors()) return finish(1);
     UniformValues values(loaded.plan);
-    for (const std::string& s : splitSets(sets ? sets : ""))
+    for (const std::string& s : glimmer_web::splitSets(sets ? sets : ""))
         if (!values.applySet(loaded.plan, s, diags)) return finish(2);
     std::string why;
-    if (!context) context = createWebGl2Context("#canvas", why);
-    if (!context) {
+    if (!glimmer_web::pageContext(&why)) {
         out << "glimmer: error: " << why << "\n";
         return finish(1);
     }

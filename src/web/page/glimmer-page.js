@@ -46,6 +46,11 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
   const check = glimmer.cwrap("glimmer_check", "number", ["string"]);
   const render = glimmer.cwrap("glimmer_render", "number", ["string", "number", "number", "string"]);
   const output = glimmer.cwrap("glimmer_last_output", "string", []);
+  const viewOpen = glimmer.cwrap("glimmer_view_open", "number", ["string", "number", "number", "string"]);
+  const viewSet = glimmer.cwrap("glimmer_view_set", "number", ["string"]);
+  const viewValue = glimmer.cwrap("glimmer_view_value", "string", ["string"]);
+  const viewControl = glimmer.cwrap("glimmer_view_control", "string", ["string"]);
+  const viewDrawn = glimmer.cwrap("glimmer_view_drawn", "string", []);
   const select = document.getElementById("script");
   const verdict = document.getElementById("verdict");
   const shown = document.getElementById("diagnostics");
@@ -143,17 +148,23 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     ctx.putImageData(img, 0, 0);
     picture.dataset.png = copy.toDataURL("image/png");
   };
-  // Save PNG downloads the last picture as SCRIPT.png, the name `glimmer
-  // render` users give it (the browser asks where, or puts it in Downloads).
+  // Save PNG downloads the picture as SCRIPT.png, the name `glimmer render`
+  // users give it (the browser asks where, or puts it in Downloads); the
+  // live view's picture as it is now, without the panel.
   const save = document.getElementById("save");
   let savedName = "glimmer.png";
-  save.onclick = () => {
+  const download = (name) => {
     const link = document.createElement("a");
     link.href = picture.dataset.png;
-    link.download = savedName;
+    link.download = name;
     link.click();
   };
+  save.onclick = () => {
+    if (live && glimmer._glimmer_view_snapshot()) keepPicture();
+    download(savedName);
+  };
   const runRender = (value, width, height, sets) => {
+    live = null;  // the one-shot render takes the canvas from the live view
     const [root, path] = locate(value);
     FS.chdir(root);
     canvas.width = width || 512;
@@ -169,8 +180,62 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     }
     return exit;
   };
+
+  // The live view (web_view.cpp): the picture with the desktop's panel
+  // beside it on the canvas, a frame each time the browser paints. A load
+  // with errors keeps the last good picture and the slider values.
+  let live = null;  // { root, path, width, height } of the open script
+  let lastTick = 0;
+  const tick = (now) => {
+    if (!live) return;
+    const asked = glimmer._glimmer_view_frame(lastTick ? (now - lastTick) / 1000 : 0);
+    lastTick = now;
+    // The layout's size for the next frame (resizing clears the canvas).
+    const w = glimmer._glimmer_view_width(), h = glimmer._glimmer_view_height();
+    if (w > 0 && h > 0 && (canvas.width !== w || canvas.height !== h)) { canvas.width = w; canvas.height = h; }
+    if (asked & 1) runView(live.root + ":" + live.path, live.width, live.height, "");  // Reload: the files as they are now
+    if (asked & 6) { keepPicture(); download(asked & 4 ? "glimmer-hardcopy.png" : savedName); }
+    requestAnimationFrame(tick);
+  };
+  const runView = (value, width, height, sets) => {
+    const [root, path] = locate(value);
+    FS.chdir(root);
+    const wasLive = live;
+    const exit = viewOpen(path, width, height, sets);
+    report(path, exit, "drawn");
+    const shows = exit === 0 || (exit === 1 && glimmer._glimmer_view_snapshot());
+    live = shows ? { root, path, width, height } : null;
+    save.disabled = !shows;
+    if (!shows) return exit;
+    savedName = path.split("/").pop().replace(/\.glib$/, "") + ".png";
+    glimmer._glimmer_view_frame(0);  // the first picture, then the canvas at the layout's size
+    canvas.width = glimmer._glimmer_view_width();
+    canvas.height = glimmer._glimmer_view_height();
+    glimmer._glimmer_view_frame(0);
+    if (glimmer._glimmer_view_snapshot()) keepPicture();
+    if (exit === 0 && !document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
+    if (!wasLive) { lastTick = 0; requestAnimationFrame(tick); }
+    return exit;
+  };
+  canvas.tabIndex = 0;  // the panel's text fields take keys once the canvas is clicked
+  canvas.addEventListener("mousedown", () => canvas.focus());
   document.getElementById("check").onclick = () => runCheck(select.value);
-  document.getElementById("draw").onclick = () => runRender(select.value, 512, 512, "");
+  document.getElementById("draw").onclick = () => runView(select.value, 512, 512, "");
+  // For tests and the console (tools/test-web.sh drives these over the
+  // DevTools protocol): the live view's state and a file written as an
+  // editor would.
+  globalThis.glimmerPage = {
+    view: (value, width = 512, height = 512, sets = "") => runView(value, width, height, sets),
+    set: (text) => viewSet(text),
+    value: (name) => viewValue(name),
+    control: (name) => viewControl(name).split(" ").filter(Boolean).map(Number),
+    drawn: () => viewDrawn(),
+    errors: () => glimmer._glimmer_view_errors(),
+    snapshot: () => { if (glimmer._glimmer_view_snapshot()) keepPicture(); return picture.dataset.png || ""; },
+    readFile: (path) => FS.readFile(path, { encoding: "utf8" }),
+    writeFile: (path, text) => FS.writeFile(path, text),
+    reload: () => live && runView(live.root + ":" + live.path, live.width, live.height, ""),
+  };
 
   // A folder picked or dropped: its files, their paths below the folder.
   const takeFiles = async (entries) => {
@@ -181,7 +246,7 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     }
     const why = mountUser(files);
     if (why) refuse(why);
-    else if (select.length) { select.selectedIndex = 0; runRender(select.value, 512, 512, ""); }
+    else if (select.length) { select.selectedIndex = 0; runView(select.value, 512, 512, ""); }
   };
   // webkitRelativePath is "folder/sub/file": the picked folder's own name goes.
   document.getElementById("folder").onchange = (e) =>
@@ -219,7 +284,8 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     listScripts();
   }
   // A lesson opened with no script named draws its first script.
-  if (lesson && !query.get("check") && !query.get("render") && select.length) runRender(select.value, 512, 512, "");
+  if (lesson && !query.get("check") && !query.get("render") && !query.get("view") && select.length)
+    runView(select.value, 512, 512, "");
   if (query.get("check")) runCheck(query.get("check"));
   if (query.get("render")) {
     const [w, h] = (query.get("size") || "512x512").split("x").map(Number);
@@ -227,6 +293,11 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     // ?frames=N: N more frames timed (PERFORMANCE.md's page-against-render figure).
     const frames = Number(query.get("frames") || 0);
     if (exit === 0 && frames > 0) picture.dataset.frameMs = glimmer._glimmer_time_frames(frames).toFixed(3);
+  }
+  // ?view=PATH[&size=WxH][&set=...]: the live view of a script.
+  if (query.get("view")) {
+    const [w, h] = (query.get("size") || "512x512").split("x").map(Number);
+    runView(query.get("view"), w, h, query.get("set") || "");
   }
   document.body.dataset.ready = "1";
 });

@@ -1,0 +1,315 @@
+// The page's live viewer: `glimmer view` on the page's canvas. The picture
+// on the left at its own size, the same Dear ImGui panel as the desktop's
+// on its right (view/panel.h), laid out by the desktop's own layoutWindow.
+// A slider redraws only the passes it reaches (plan/dependencies.h); a load
+// with errors keeps the last good picture and the slider values
+// (view/viewer_state.h adoptScript), as the desktop viewer does.
+//
+// The page drives it (src/web/page/glimmer-page.js); there is no loop in
+// here, so the page decides when to draw (requestAnimationFrame) and the
+// tests can step it:
+//   glimmer_view_open(path, width, height, sets) -> 0 loaded, 1 errors (the
+//       last good script, if any, stays on show with the errors in the
+//       panel), 2 unreadable. Diagnostics in glimmer_last_output().
+//   glimmer_view_frame(seconds) -> one frame: input, panel, the passes that
+//       changed, the picture and the panel presented. Returns what the
+//       panel's buttons asked for: 1 reload, 2 save (the picture is then in
+//       glimmer_pixels), 4 a hardcopy saved at the panel's size (the same).
+//   glimmer_view_width(), glimmer_view_height(): the canvas size the layout
+//       wants (the page resizes the canvas to it between frames).
+//   glimmer_view_set(text) -> 1 when "NAME=VALUE" (as --set) applied.
+//   glimmer_view_value(name) -> the control's value(s) now, "v1 v2 ...".
+//   glimmer_view_control(name) -> "x y w h" of the control's widget in canvas
+//       pixels after the last frame ("" when not shown): where a test clicks.
+//   glimmer_view_drawn() -> the passes drawn since the last call, "i j ..."
+//       by index (a slider reaches only the passes after it).
+//   glimmer_view_snapshot() -> 1 when the picture on show (without the panel)
+//       is now in glimmer_pixels; 0 when no script has drawn yet.
+//   glimmer_view_errors() -> how many errors the panel shows (0: the last load
+//       worked).
+// Input (web_view_input.cpp) comes from the canvas's own events.
+#include <GLES3/gl3.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <emscripten/emscripten.h>
+#include <imgui.h>
+
+#include <cmath>
+#include <fstream>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include <fmt/format.h>
+
+#include "driver/console.h"
+#include "driver/prepare_script.h"
+#include "gl/window_frame.h"
+#include "view/panel.h"
+#include "view/view_model.h"
+#include "web/page_state.h"
+
+namespace {
+
+using namespace glimmer;
+
+struct WebViewer {
+    ViewerState s;
+    std::unique_ptr<WindowFrame> frame;
+    std::string script;
+    int width = 512, height = 512;  // the picture, as asked
+    int panelW = 0, panelH = 0;     // measured from the last frame's panel
+    WindowLayout layout;
+    std::set<int> drawn;     // the passes drawn since the page last asked (glimmer_view_drawn)
+    int keyAsks = 0;         // R and S pressed on the canvas: glimmer_view_frame's answer bits
+    bool imguiReady = false;
+};
+std::unique_ptr<WebViewer> viewer;
+
+GetProcAddress pageProcs() {
+    return [](const char* n) { return glimmer_web::pageContext()->getProcAddress(n); };
+}
+
+// The script at the asked size on a renderer of its own; every target kept,
+// as the desktop viewer keeps them for its pass inspector.
+int load(WebViewer& v, const std::vector<std::string>& sets, std::ostringstream& out) {
+    Diagnostics diags;
+    LoadedScript next;
+    ScriptRequest request;
+    request.script = v.script;
+    request.plan.width = v.width;
+    request.plan.height = v.height;
+    for (int unit = 0; unit < 32; ++unit) request.plan.keepTargets.insert(unit);
+    auto renderer = prepareScript(request, pageProcs(), diags, next);
+    keepMessages(v.s, diags, next.sources);
+    printDiagnostics(diags, next.sources, out);
+    if (!renderer) {
+        if (v.s.errors.empty()) v.s.errors.push_back({"the script could not be loaded", v.script});
+        v.s.failed = true;
+        v.s.status = "keeping the last good picture";
+        return std::ifstream(v.script).good() ? 1 : 2;  // 2: the script itself could not be read, as `render` exits
+    }
+    adoptScript(v.s, std::move(next), std::move(renderer), sets, diags);
+    v.s.status = "loaded";
+    return 0;
+}
+
+void startImGui(WebViewer& v) {
+    if (v.imguiReady) return;
+    ImGui::CreateContext();
+    ImGui::GetIO().IniFilename = nullptr;  // nothing written beside the user's files
+    // The font files are in the module at the desktop's Debian path (web/CMakeLists.txt).
+    setUpFonts(1.f);
+    ImGui_ImplOpenGL3_Init("#version 300 es");
+    glimmer_web::setUpCanvasInput();
+    v.imguiReady = true;
+}
+
+// The desktop's renderScene, whole frames: the page's frames are the
+// browser's, and a heavy pass holds the tab no longer than a render would.
+void drawChanged(WebViewer& v) {
+    ViewerState& s = v.s;
+    if (!s.renderer || !s.good) return;
+    Change change = changeSinceDrawn(s, true);
+    s.sceneMoved = false;
+    std::vector<bool> only = passesToRun(s.good->plan, change);
+    bool any = false;
+    for (size_t p = 0; p < only.size(); ++p)
+        if (only[p]) v.drawn.insert(int(p)), any = true;
+    if (!any) return;
+    s.renderer->setSceneTransform(sceneMatrix(s));
+    std::vector<PassTiming> timings;
+    s.renderer->render(*s.values, s.time, &timings, &only);
+    s.renderer->finish();
+    s.lastTimings = timings;
+    s.lastFrameMs = 0;
+    for (const auto& t : timings) s.lastFrameMs += t.ms;
+    s.drawnWith = s.values;
+    s.drawnTime = s.time;
+    s.drawAll = false;
+}
+
+// glman's hardcopy: the script at the panel's size on a renderer of its
+// own, with the slider values carried over.
+Image hardcopy(WebViewer& v) {
+    ViewerState& s = v.s;
+    int w = s.hardcopy[0], h = s.hardcopy[1];
+    if (!s.good || w < 1 || h < 1 || w > 8192 || h > 8192) return {};
+    Diagnostics diags;
+    LoadedScript ls;
+    ScriptRequest request;
+    request.script = v.script;
+    request.plan.width = w;
+    request.plan.height = h;
+    auto r = prepareScript(request, pageProcs(), diags, ls);
+    if (!r) return {};
+    UniformValues values(ls.plan);
+    values.carryOver(s.good->plan, *s.values, ls.plan);
+    r->setSceneTransform(sceneMatrix(s));
+    r->render(values, s.time);
+    return r->readScreen();
+}
+
+int applyAsked(WebViewer& v, const std::vector<ViewCommand>& asked) {
+    int out = 0;
+    for (const auto& c : asked) {
+        if (c.kind == ViewCommand::Kind::Reload) out |= 1;
+        if (c.kind != ViewCommand::Kind::Save || !v.s.renderer) continue;
+        if (c.unit == -2) {
+            glimmer_web::pagePicture() = hardcopy(v);
+            out |= 4;
+        } else {
+            glimmer_web::pagePicture() =
+                v.s.shownTexture < 0 ? v.s.renderer->readScreen() : v.s.renderer->readTexture(v.s.shownTexture);
+            out |= 2;
+        }
+    }
+    return out;
+}
+
+}  // namespace
+
+namespace glimmer_web {
+// The picture's rectangle on the canvas, for the input's drag-to-turn.
+bool pointerOverPicture(float x, float y) {
+    return viewer && x >= 0 && y >= 0 && x < viewer->width && y < viewer->height;
+}
+glimmer::ViewerState* viewerState() { return viewer ? &viewer->s : nullptr; }
+
+bool viewerKey(const char* key) {
+    if (!viewer || !key) return false;
+    std::string k = key;
+    if (k == "r" || k == "R") viewer->keyAsks |= 1;
+    else if (k == "s" || k == "S") viewer->keyAsks |= 2;
+    else if (k == " ") viewer->s.playing = !viewer->s.playing;
+    else if (k == "0") resetView(viewer->s);
+    else return false;
+    return true;
+}
+}  // namespace glimmer_web
+
+extern "C" {
+
+EMSCRIPTEN_KEEPALIVE int glimmer_view_open(const char* path, int width, int height, const char* sets) {
+    setVerbosity(Verbosity::Normal);
+    std::ostringstream out;
+    if (!glimmer_web::pageContext()) {
+        glimmer_web::setLastOutput("glimmer: error: this browser cannot make a WebGL 2 context\n");
+        return 1;
+    }
+    std::string asked = path ? path : "";
+    // Another script: a fresh viewer (values do not carry across scripts).
+    if (!viewer || viewer->script != asked || viewer->width != width || viewer->height != height) {
+        bool hadImGui = viewer && viewer->imguiReady;
+        viewer.reset();
+        viewer = std::make_unique<WebViewer>();
+        viewer->imguiReady = hadImGui;
+        viewer->script = asked;
+        viewer->width = width > 0 ? width : 512;
+        viewer->height = height > 0 ? height : 512;
+    }
+    std::string why;
+    if (!viewer->frame) viewer->frame = WindowFrame::create(pageProcs(), why);
+    if (!viewer->frame) {
+        glimmer_web::setLastOutput("glimmer: error: " + why + "\n");
+        return 1;
+    }
+    startImGui(*viewer);
+    int code = load(*viewer, glimmer_web::splitSets(sets ? sets : ""), out);
+    glimmer_web::setLastOutput(out.str());
+    return code;
+}
+
+EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
+    if (!viewer || !viewer->imguiReady) return 0;
+    WebViewer& v = *viewer;
+    ViewerState& s = v.s;
+    if (s.playing && seconds > 0 && seconds < 1) s.time += seconds;
+    v.layout = layoutWindow(v.width, v.height, true, v.panelW, v.panelH, 4096);
+    ImGuiIO& io = ImGui::GetIO();
+    io.DisplaySize = ImVec2(float(v.layout.windowW), float(v.layout.windowH));
+    io.DeltaTime = seconds > 0 && seconds < 1 ? float(seconds) : 1.f / 60.f;
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui::NewFrame();
+    drawChanged(v);
+    ImGui::SetNextWindowPos(ImVec2(float(v.layout.panelX), 0.f), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(0.f, float(v.layout.windowH)), ImGuiCond_Always);  // width: the content's
+    ImGui::SetNextWindowBgAlpha(1.f);
+    ImGui::Begin("Glimmer", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    std::vector<std::pair<int, unsigned>> thumbs;
+    if (s.renderer)
+        for (int t : s.renderer->renderTargets()) thumbs.push_back({t, s.renderer->textureName(t)});
+    auto asked = drawPanel(s, thumbs);
+    for (auto [bit, kind] : {std::pair{1, ViewCommand::Kind::Reload}, std::pair{2, ViewCommand::Kind::Save}})
+        if (v.keyAsks & bit) {
+            ViewCommand c;
+            c.kind = kind;
+            asked.push_back(c);
+        }
+    v.keyAsks = 0;
+    v.panelH = int(ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y + 1);
+    v.panelW = int(ImGui::GetWindowWidth());
+    ImGui::End();
+    ImGui::Render();
+    v.frame->begin(v.layout.windowW, v.layout.windowH, 0.12f, 0.12f, 0.14f);
+    presentPicture(s, v.layout.windowH, 0, 0, v.width, v.height);
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    return applyAsked(v, asked);
+}
+
+EMSCRIPTEN_KEEPALIVE int glimmer_view_width() {
+    return viewer ? layoutWindow(viewer->width, viewer->height, true, viewer->panelW, viewer->panelH, 4096).windowW : 0;
+}
+EMSCRIPTEN_KEEPALIVE int glimmer_view_height() {
+    return viewer ? layoutWindow(viewer->width, viewer->height, true, viewer->panelW, viewer->panelH, 4096).windowH : 0;
+}
+
+EMSCRIPTEN_KEEPALIVE int glimmer_view_set(const char* text) {
+    if (!viewer || !viewer->s.good || !viewer->s.values || !text) return 0;
+    Diagnostics diags;
+    bool ok = viewer->s.values->applySet(viewer->s.good->plan, text, diags);
+    return ok && !diags.hasErrors() ? 1 : 0;
+}
+
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_value(const char* name) {
+    static std::string text;
+    text.clear();
+    if (!viewer || !viewer->s.good || !viewer->s.values || !name) return text.c_str();
+    const Plan& plan = viewer->s.good->plan;
+    for (size_t p = 0; p < plan.programs.size() && text.empty(); ++p)
+        for (double x : viewer->s.values->get(int(p), name)) text += (text.empty() ? "" : " ") + fmt::format("{:g}", x);
+    return text.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_control(const char* name) {
+    static std::string text;
+    text.clear();
+    if (!viewer || !name) return text.c_str();
+    auto it = viewer->s.controlRects.find(name);
+    if (it != viewer->s.controlRects.end())
+        text = fmt::format("{:g} {:g} {:g} {:g}", it->second[0], it->second[1], it->second[2], it->second[3]);
+    return text.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_drawn() {
+    static std::string text;
+    text.clear();
+    if (viewer) {
+        for (int p : viewer->drawn) text += (text.empty() ? "" : " ") + std::to_string(p);
+        viewer->drawn.clear();
+    }
+    return text.c_str();
+}
+
+EMSCRIPTEN_KEEPALIVE int glimmer_view_snapshot() {
+    if (!viewer || !viewer->s.renderer) return 0;
+    const ViewerState& s = viewer->s;
+    glimmer_web::pagePicture() = s.shownTexture < 0 ? s.renderer->readScreen() : s.renderer->readTexture(s.shownTexture);
+    return glimmer_web::pagePicture().empty() ? 0 : 1;
+}
+
+EMSCRIPTEN_KEEPALIVE int glimmer_view_errors() { return viewer ? int(viewer->s.errors.size()) : 0; }
+
+}  // extern "C"
