@@ -28,6 +28,7 @@ test_packages=(
   xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
   emscripten chromium                 # the browser build (src/web) and its headless test (tools/test-web.sh)
   node-ws                             # the page driven over the DevTools protocol (tools/cdp-page.mjs)
+  libjs-codemirror                    # the page's code editor (CodeMirror 5, src/web/page/glimmer-editor.js)
   dpkg-dev                            # apt-get source: glslang and SPIRV-Cross for the browser build (src/web/third_party.cmake)
 )
 case "${1:-all}" in

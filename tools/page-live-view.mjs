@@ -2,13 +2,16 @@
 // SCRIPT (a bundled lesson path) in the live view, drags each named slider
 // of the panel with the mouse (real input events over the DevTools
 // protocol, at the control's place on the canvas), then breaks a shader the
-// way a typo would and reloads. Writes OUT_DIR/slider-NAME.png (the
-// picture after each slider) and OUT_DIR/broken.png (after the broken
-// reload), and prints one JSON object:
-//   { sliders: [{ name, value, drawn }], broken: { exit, errors, value,
-//     verdict, diagnostics }, restored: { exit, errors } }
+// way a student's typo would, typed into the page's editor: the error on
+// its line, a click on the message going to it, the edit surviving a
+// reload of the page, Revert. Writes OUT_DIR/slider-NAME.png (the picture
+// after each slider) and OUT_DIR/broken.png (after the typo), and prints
+// one JSON object: { sliders: [{ name, value, drawn }], broken, clicked,
+// reloaded, restored }, each of the last four the page's state then
+// (exit, errors, value, diagnostics, the editor's file, cursor line,
+// marked lines and messages, text).
 //   NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs PAGE_URL SCRIPT SHADER LINE OUT_DIR NAME=FRACTION...
-// SHADER (a lesson path) gets an undeclared name on LINE; FRACTION is where
+// SHADER (its path as the script's diagnostics name it) gets an undeclared name on LINE; FRACTION is where
 // along the slider the mouse presses (0 its left end, 1 its right).
 import { writeFileSync } from "node:fs";
 import { join } from "node:path";
@@ -50,22 +53,47 @@ for (const drag of drags) {
   savePng(`slider-${name}.png`, await page.evaluate("glimmerPage.snapshot()"));
 }
 
-// A typo in the shader: an undeclared name on LINE, then Reload.
-const state = () => page.evaluate(`({ errors: glimmerPage.errors(), value: glimmerPage.value(${JSON.stringify(drags[0].split("=")[0])}),
-  exit: Number(document.getElementById("verdict").dataset.exit), verdict: document.getElementById("verdict").textContent,
-  diagnostics: document.getElementById("diagnostics").textContent })`);
-const original = await page.evaluate(`glimmerPage.readFile(${JSON.stringify(shader)})`);
-const broken = original.split("\n");
-broken[Number(line) - 1] += " undeclaredTypo;";
-await page.evaluate(`glimmerPage.writeFile(${JSON.stringify(shader)}, ${JSON.stringify(broken.join("\n"))}); glimmerPage.reload()`);
-await frames();
+// A typo typed into the page's editor at the end of LINE of SHADER (real
+// key input into CodeMirror); the page reloads the script once typing stops.
+const state = () => page.evaluate(`(() => {
+  const ed = glimmerPage.editor();
+  return { errors: glimmerPage.errors(), value: glimmerPage.value(${JSON.stringify(drags[0].split("=")[0])}),
+    exit: Number(document.getElementById("verdict").dataset.exit), verdict: document.getElementById("verdict").textContent,
+    diagnostics: document.getElementById("diagnostics").textContent, shown: ed.shown(),
+    cursorLine: ed.cm.getCursor().line + 1,
+    marked: [...document.querySelectorAll(".glimmer-error-line")].length,
+    markedLines: ed.cm.getValue().split("\\n").map((_, i) => i + 1).filter((n) =>
+      (ed.cm.lineInfo(n - 1).bgClass || "").includes("glimmer-error-line")).join(" "),
+    message: [...document.querySelectorAll(".glimmer-message-error")].map((e) => e.textContent).join("\\n"),
+    text: ed.cm.getValue() };
+})()`);
+const settle = () => sleep(1200);  // the editor's pause after typing, the reload, a few frames
+await page.evaluate(`glimmerPage.editor().open(${JSON.stringify(shader)}, ${Number(line)}, 1);
+  glimmerPage.editor().cm.setCursor({ line: ${Number(line) - 1}, ch: 10000 }); glimmerPage.editor().cm.focus()`);
+await page.send("Input.insertText", { text: " undeclaredTypo;" });
+await settle();
 result.broken = await state();
 savePng("broken.png", await page.evaluate("glimmerPage.snapshot()"));
 const shot = await page.send("Page.captureScreenshot", { format: "png" });
 writeFileSync(join(outDir, "broken-page.png"), Buffer.from(shot.result.data, "base64"));
-// The typo fixed: the same file again, and the errors go.
-await page.evaluate(`glimmerPage.writeFile(${JSON.stringify(shader)}, ${JSON.stringify(original)}); glimmerPage.reload()`);
-await frames();
+
+// Clicking the error in the diagnostics goes to it (from another file on show).
+await page.evaluate(`(() => { const ed = glimmerPage.editor(); ed.open(${JSON.stringify(script)}, 1, 1);
+  [...document.querySelectorAll("#diagnostics .jump")].find((e) => e.textContent.includes("error:")).click(); })()`);
+result.clicked = await state();
+
+// The page reloaded (a closed tab, a lost network): the typed edit is still there.
+await page.navigate();
+await settle();
+result.reloaded = await state();
+if (result.reloaded.shown !== shader) {
+  await page.evaluate(`glimmerPage.editor().open(${JSON.stringify(shader)})`);
+  result.reloaded = await state();
+}
+// Revert: the file as the folder has it, the error gone, nothing kept.
+await page.evaluate(`document.getElementById("revert").click()`);
+await settle();
 result.restored = await state();
+result.restored.kept = await page.evaluate(`Object.keys(localStorage).filter((k) => k.startsWith("glimmer-draft")).length`);
 console.log(JSON.stringify(result));
 page.close(0);

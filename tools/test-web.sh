@@ -41,7 +41,8 @@ dom = sys.stdin.read()
 exit_ = re.search(r"id=\"verdict\" data-exit=\"(\d+)\"", dom)
 diag = re.search(r"<pre id=\"diagnostics\">(.*?)</pre>", dom, re.S)
 print(exit_.group(1) if exit_ else "no-result")
-sys.stdout.write(html.unescape(diag.group(1)) if diag else "")'
+# the text only: each "file:line:col:" line is a link to the editor (a span)
+sys.stdout.write(html.unescape(re.sub(r"<[^>]+>", "", diag.group(1))) if diag else "")'
 }
 # The bundled scripts compile cleanly on the desktop, so its `check` says
 # nothing a GL driver alone could say, and the outputs must be equal.
@@ -165,12 +166,14 @@ fi
 # the mouse redraws only the passes it reaches (uAdd: the Bloom pass, 1;
 # uHalfSize: the SuperBlur pass and the Bloom pass reading it, 0 and 1) and
 # gives render's picture with --set at the value the slider shows; then a
-# typo in bloom.frag is an error at its line and column, and the picture
-# and the slider values stay; fixing the typo clears the error.
+# typo typed into bloom.frag in the page's editor is one error at its line
+# and column, marked on that line, and the picture and the slider values
+# stay; a click on the error goes to it; the edit survives a reload of the
+# page; Revert brings the file back and the error goes.
 mkdir "$pictures/live"
 echo "  the live view: sliders, a broken shader edit"
 live="$(NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs "file://$page" scripts/bloom.glib \
-          /lesson/shaders/bloom.frag 13 "$pictures/live" uAdd=0.5 uHalfSize=0.3 2>&1)"
+          shaders/bloom.frag 13 "$pictures/live" uAdd=0.5 uHalfSize=0.3 2>&1)"
 field() { python3 -c 'import json, sys; r = json.loads(sys.argv[1]); print(eval(sys.argv[2], {}, r))' "$live" "$1" 2>/dev/null; }
 add="$(field 'sliders[0]["value"]')" half="$(field 'sliders[1]["value"]')"
 if [ "$(field 'sliders[0]["drawn"]')" = "1" ] && [ "$(field 'sliders[1]["drawn"]')" = "0 1" ]; then
@@ -192,15 +195,31 @@ for pair in "slider-uAdd.png|live_add.png|uAdd=$add" "slider-uHalfSize.png|live_
   fi
 done
 want="shaders/bloom.frag:13:52: error: 'undeclaredTypo': undeclared identifier"
-if [ "$(field 'broken["exit"]')" = 1 ] && [ "$(field 'broken["errors"]')" = 1 ] &&
-   grep -qF "$want" <<<"$(field 'broken["diagnostics"]')" && [ "$(field 'broken["value"]')" = "$add" ] &&
-   cmp -s "$pictures/live/broken.png" "$pictures/live/slider-uHalfSize.png" &&
-   [ "$(field 'restored["exit"]')" = 0 ] && [ "$(field 'restored["errors"]')" = 0 ]; then
+check_live() {  # DESCRIPTION PYTHON-CONDITION over the page's states
+  if python3 -c 'import json, sys; r = json.loads(sys.argv[1]); sys.exit(0 if eval("(" + sys.argv[2] + ")", {}, r) else 1)' \
+       "$live" "$2" 2>/dev/null; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "DIFFERS: $1: $live" | cut -c1-2000
+  fi
+}
+check_live "a typo typed into bloom.frag must be one error, '$want', marked on line 13 of the editor, the value kept" \
+  "broken['exit'] == 1 and broken['errors'] == 1 and \"$want\" in broken['diagnostics'] and broken['value'] == '$add'
+   and broken['shown'] == 'shaders/bloom.frag' and broken['markedLines'] == '13'
+   and \"'undeclaredTypo': undeclared identifier\" in broken['message']"
+if cmp -s "$pictures/live/broken.png" "$pictures/live/slider-uHalfSize.png"; then
   passed=$((passed + 1))
 else
   failed=$((failed + 1))
-  echo "DIFFERS: a broken shader edit must show '$want', keep the picture and the values, and clear when fixed: $live"
+  echo "DIFFERS: the broken edit did not keep the last good picture"
 fi
+check_live "clicking the error in the diagnostics must open bloom.frag at line 13" \
+  "clicked['shown'] == 'shaders/bloom.frag' and clicked['cursorLine'] == 13"
+check_live "the typed edit must survive a reload of the page" \
+  "'undeclaredTypo' in reloaded['text'] and reloaded['errors'] == 1 and reloaded['markedLines'] == '13'"
+check_live "Revert must bring back the file, clear the error and keep nothing" \
+  "restored['exit'] == 0 and restored['errors'] == 0 and restored['kept'] == 0 and 'undeclaredTypo' not in restored['text']"
 
 # A lesson whose file would leave the page's /user folder is refused as a
 # whole, with the reason, and nothing is drawn.

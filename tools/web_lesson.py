@@ -20,6 +20,7 @@ opened from disk may load scripts but not fetch files.
 Sizes are bounded before anything is read whole: 64 MiB of lesson files.
 """
 import base64
+import re
 import json
 import os
 import sys
@@ -72,20 +73,23 @@ def pack(folder, web, html_out=None, static_dir=None):
     files = collect(folder, [folder])
     if not any(p.endswith(".glib") for p in files):
         fail(f"{folder}: no .glib script in it")
-    parts = {}
-    for name in ("index.html", "glimmer-page.js", "glimmer-web.js", "glimmer-web.wasm"):
+    # The page and every file it names (scripts, style sheets), and the module's wasm.
+    def read(name):
         path = os.path.join(web, name)
         if not os.path.isfile(path):
             fail(f"{path} is missing: build the page first (tools/build-web.sh)")
         with open(path, "rb") as f:
-            parts[name] = f.read()
-    page = parts["index.html"].decode()
+            return f.read()
+    page = read("index.html").decode()
+    named = re.findall(r'<script src="([^"]+)"></script>|<link rel="stylesheet" href="([^"]+)">', page)
+    parts = {name: read(name) for pair in named for name in pair if name}
+    parts["glimmer-web.wasm"] = read("glimmer-web.wasm")
     tag = '<script src="glimmer-web.js"></script>'
     if tag not in page:
         fail(f"{web}/index.html has no {tag}: the page and this packer disagree")
     if static_dir:
-        os.makedirs(static_dir, exist_ok=True)
         for name, data in parts.items():
+            os.makedirs(os.path.dirname(os.path.join(static_dir, name)), exist_ok=True)
             with open(os.path.join(static_dir, name), "wb") as f:
                 f.write(data)
         with open(os.path.join(static_dir, "lesson.js"), "w") as f:
@@ -98,10 +102,16 @@ def pack(folder, web, html_out=None, static_dir=None):
             # A script element ends at the first "</script": keep it out of the code.
             return "<script>" + code.replace("</script", "<\\/script") + "</script>"
         wasm = base64.b64encode(parts["glimmer-web.wasm"]).decode()
-        page = page.replace(tag, inline(lesson_js(files)) + "\n"
-                            + inline(f'globalThis.glimmerWasm = "{wasm}";') + "\n"
-                            + inline(parts["glimmer-web.js"].decode()))
-        page = page.replace('<script src="glimmer-page.js"></script>', inline(parts["glimmer-page.js"].decode()))
+        for script, sheet in named:
+            if sheet:
+                css = parts[sheet].decode().replace("</style", "<\\/style")
+                page = page.replace(f'<link rel="stylesheet" href="{sheet}">', "<style>" + css + "</style>")
+            elif script == "glimmer-web.js":
+                page = page.replace(tag, inline(lesson_js(files)) + "\n"
+                                    + inline(f'globalThis.glimmerWasm = "{wasm}";') + "\n"
+                                    + inline(parts["glimmer-web.js"].decode()))
+            else:
+                page = page.replace(f'<script src="{script}"></script>', inline(parts[script].decode()))
         with open(html_out, "w") as f:
             f.write(page)
         print(f"wrote {html_out} ({len(files)} lesson files, {os.path.getsize(html_out)} bytes)")

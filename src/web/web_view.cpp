@@ -25,6 +25,9 @@
 //       by index (a slider reaches only the passes after it).
 //   glimmer_view_snapshot() -> 1 when the picture on show (without the panel)
 //       is now in glimmer_pixels; 0 when no script has drawn yet.
+//   glimmer_view_messages() -> the last load's diagnostics for the editor, a
+//       line each: severity, file, line, column, message, tab-separated.
+//   glimmer_view_files() -> the script and its shader files, a line each.
 //   glimmer_view_errors() -> how many errors the panel shows (0: the last load
 //       worked).
 // Input (web_view_input.cpp) comes from the canvas's own events.
@@ -33,6 +36,7 @@
 #include <emscripten/emscripten.h>
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <memory>
@@ -61,6 +65,8 @@ struct WebViewer {
     int panelW = 0, panelH = 0;     // measured from the last frame's panel
     WindowLayout layout;
     std::set<int> drawn;     // the passes drawn since the page last asked (glimmer_view_drawn)
+    std::vector<std::string> files;  // the script and its shaders, as the last load named them
+    std::string messages;            // the last load's diagnostics, a line each (glimmer_view_messages)
     int keyAsks = 0;         // R and S pressed on the canvas: glimmer_view_frame's answer bits
     bool imguiReady = false;
 };
@@ -68,6 +74,32 @@ std::unique_ptr<WebViewer> viewer;
 
 GetProcAddress pageProcs() {
     return [](const char* n) { return glimmer_web::pageContext()->getProcAddress(n); };
+}
+
+// For the page's editor: each diagnostic as one line of tab-separated
+// fields, severity, file, line, column, message (tabs and line breaks in a
+// message become spaces), so the page marks them on their lines.
+std::string messageLines(const Diagnostics& diags) {
+    std::string out;
+    for (const auto& d : diags.all()) {
+        std::string message = d.message;
+        for (char& c : message)
+            if (c == '\t' || c == '\n' || c == '\r') c = ' ';
+        const char* severity = d.severity == Severity::Error ? "error" : d.severity == Severity::Warning ? "warning" : "note";
+        out += fmt::format("{}\t{}\t{}\t{}\t{}\n", severity, d.file, d.loc.line, d.loc.col, message);
+    }
+    return out;
+}
+
+// The files a student edits: the script, then each shader its Programs
+// name, once each, in the order they appear.
+std::vector<std::string> textFilesOf(const std::string& script, const Plan& plan) {
+    std::vector<std::string> files = {script};
+    for (const auto& program : plan.programs)
+        for (const auto& stage : program.stages)
+            if (!stage.path.empty() && std::find(files.begin(), files.end(), stage.path) == files.end())
+                files.push_back(stage.path);
+    return files;
 }
 
 // The script at the asked size on a renderer of its own; every target kept,
@@ -83,6 +115,8 @@ int load(WebViewer& v, const std::vector<std::string>& sets, std::ostringstream&
     auto renderer = prepareScript(request, pageProcs(), diags, next);
     keepMessages(v.s, diags, next.sources);
     printDiagnostics(diags, next.sources, out);
+    v.messages = messageLines(diags);
+    if (!next.plan.programs.empty() || v.files.empty()) v.files = textFilesOf(v.script, next.plan);
     if (!renderer) {
         if (v.s.errors.empty()) v.s.errors.push_back({"the script could not be loaded", v.script});
         v.s.failed = true;
@@ -308,6 +342,16 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_snapshot() {
     const ViewerState& s = viewer->s;
     glimmer_web::pagePicture() = s.shownTexture < 0 ? s.renderer->readScreen() : s.renderer->readTexture(s.shownTexture);
     return glimmer_web::pagePicture().empty() ? 0 : 1;
+}
+
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_messages() { return viewer ? viewer->messages.c_str() : ""; }
+
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_files() {
+    static std::string text;
+    text.clear();
+    if (viewer)
+        for (const auto& f : viewer->files) text += f + "\n";
+    return text.c_str();
 }
 
 EMSCRIPTEN_KEEPALIVE int glimmer_view_errors() { return viewer ? int(viewer->s.errors.size()) : 0; }

@@ -112,11 +112,26 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
   };
   FS.mkdir("/user");
 
+  // The diagnostics as the desktop prints them; each "file:line:col:" opens
+  // that file at that place in the editor.
+  const showDiagnostics = (text) => {
+    shown.textContent = "";
+    for (const line of text.split(/(?<=\n)/)) {
+      const at = /^([^\s:]+):(\d+):(\d+): (error|warning|note):/.exec(line);
+      if (!at) { shown.append(line); continue; }
+      const jump = document.createElement("span");
+      jump.className = "jump";
+      jump.textContent = line;
+      jump.title = "open " + at[1] + " at line " + at[2];
+      jump.onclick = () => editor.open(at[1], Number(at[2]), Number(at[3]));
+      shown.append(jump);
+    }
+  };
   const report = (path, exit, what) => {
     verdict.dataset.exit = String(exit);
     verdict.className = exit === 0 ? "ok" : "bad";
     verdict.textContent = path + ": " + (exit === 0 ? what : exit === 1 ? "errors" : "not run (usage: an unreadable script or a bad value)");
-    shown.textContent = output();
+    showDiagnostics(output());
   };
   const refuse = (why) => {
     verdict.dataset.exit = "2";
@@ -203,6 +218,12 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     const wasLive = live;
     const exit = viewOpen(path, width, height, sets);
     report(path, exit, "drawn");
+    const files = glimmer.UTF8ToString(glimmer._glimmer_view_files()).split("\n").filter(Boolean);
+    if (files.length) editor.setFiles(root, files);
+    editor.mark(glimmer.UTF8ToString(glimmer._glimmer_view_messages()).split("\n").filter(Boolean).map((l) => {
+      const [severity, file, line, col, message] = l.split("\t");
+      return { severity, file, line: Number(line), col: Number(col), message };
+    }));
     const shows = exit === 0 || (exit === 1 && glimmer._glimmer_view_snapshot());
     live = shows ? { root, path, width, height } : null;
     save.disabled = !shows;
@@ -217,6 +238,42 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     if (!wasLive) { lastTick = 0; requestAnimationFrame(tick); }
     return exit;
   };
+  // The editor (glimmer-editor.js): an edit is written into the module's
+  // file system and the script reloads a moment after typing stops.
+  let folderHandle = null;  // a folder opened in place (showDirectoryPicker): Save writes into it
+  const editor = createGlimmerEditor({
+    element: document.getElementById("editor"), tabs: document.getElementById("tabs"),
+    note: document.getElementById("edit-note"),
+    readFile: (path) => FS.readFile(path, { encoding: "utf8" }), writeFile: (path, text) => FS.writeFile(path, text),
+    onEdit: () => live ? runView(live.root + ":" + live.path, live.width, live.height, "") : runView(select.value, 512, 512, ""),
+  });
+  // Save file: into the folder opened in place where the browser allows it
+  // (Chromium's File System Access), else a download of the file.
+  const writeBack = async (path, text) => {
+    if (!folderHandle || !live || live.root !== "/user") return false;
+    try {
+      let dir = folderHandle;
+      const parts = path.split("/");
+      for (const part of parts.slice(0, -1)) dir = await dir.getDirectoryHandle(part);
+      const out = await (await dir.getFileHandle(parts.at(-1))).createWritable();
+      await out.write(text);
+      await out.close();
+      return true;
+    } catch (e) { return false; }
+  };
+  document.getElementById("save-file").onclick = async () => {
+    const path = editor.shown();
+    if (!path) return;
+    if (await editor.saveCurrent(writeBack)) return;
+    const link = document.createElement("a");
+    link.href = URL.createObjectURL(new Blob([editor.cm.getValue()], { type: "text/plain" }));
+    link.download = path.split("/").pop();
+    link.click();
+    document.getElementById("edit-note").textContent =
+      `${path}: downloaded (this browser cannot write into the folder; your edit stays kept here)`;
+  };
+  document.getElementById("revert").onclick = () => editor.revertCurrent();
+
   canvas.tabIndex = 0;  // the panel's text fields take keys once the canvas is clicked
   canvas.addEventListener("mousedown", () => canvas.focus());
   document.getElementById("check").onclick = () => runCheck(select.value);
@@ -235,22 +292,47 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     readFile: (path) => FS.readFile(path, { encoding: "utf8" }),
     writeFile: (path, text) => FS.writeFile(path, text),
     reload: () => live && runView(live.root + ":" + live.path, live.width, live.height, ""),
+    editor: () => editor,
   };
 
   // A folder picked or dropped: its files, their paths below the folder.
-  const takeFiles = async (entries) => {
+  const takeFiles = async (entries, name, handle = null) => {
     const files = [];
     for (const [path, file] of entries) {
       if (files.length > kMaxUserFiles) break;
       files.push([path, new Uint8Array(await file.arrayBuffer())]);
     }
     const why = mountUser(files);
-    if (why) refuse(why);
-    else if (select.length) { select.selectedIndex = 0; runView(select.value, 512, 512, ""); }
+    if (why) { refuse(why); return; }
+    folderHandle = handle;
+    editor.setFolder("user:" + name);
+    editor.restoreDrafts("/user");
+    if (select.length) { select.selectedIndex = 0; runView(select.value, 512, 512, ""); }
   };
   // webkitRelativePath is "folder/sub/file": the picked folder's own name goes.
   document.getElementById("folder").onchange = (e) =>
-    takeFiles([...e.target.files].map((f) => [f.webkitRelativePath.split("/").slice(1).join("/"), f]));
+    takeFiles([...e.target.files].map((f) => [f.webkitRelativePath.split("/").slice(1).join("/"), f]),
+              e.target.files.length ? e.target.files[0].webkitRelativePath.split("/")[0] : "");
+  // A folder opened in place: the same files, and Save file writes back.
+  const inPlace = document.getElementById("in-place");
+  if (globalThis.showDirectoryPicker) {
+    const walk = async (dir, prefix, out) => {
+      for await (const [name, entry] of dir.entries()) {
+        if (out.length > kMaxUserFiles) return;
+        if (entry.kind === "file") out.push([prefix + name, await entry.getFile()]);
+        else await walk(entry, prefix + name + "/", out);
+      }
+    };
+    inPlace.onclick = async () => {
+      let dir;
+      try { dir = await showDirectoryPicker({ mode: "readwrite" }); } catch { return; }  // the user cancelled
+      const out = [];
+      await walk(dir, "", out);
+      takeFiles(out, dir.name, dir);
+    };
+  } else {
+    inPlace.hidden = true;  // Firefox, Safari: edits are downloaded
+  }
   const readEntry = (entry, prefix, out) => new Promise((resolve) => {
     if (entry.isFile) entry.file((f) => { out.push([prefix + entry.name, f]); resolve(); }, resolve);
     else {
@@ -274,14 +356,18 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     // One dropped folder: paths below it, as with the picker.
     const top = new Set(out.map(([p]) => p.split("/")[0]));
     const strip = top.size === 1 && out.every(([p]) => p.includes("/"));
-    takeFiles(out.map(([p, f]) => [strip ? p.slice(p.indexOf("/") + 1) : p, f]));
+    takeFiles(out.map(([p, f]) => [strip ? p.slice(p.indexOf("/") + 1) : p, f]), strip ? [...top][0] : "dropped");
   };
 
+  // Edits kept from an earlier visit come back before anything is drawn.
   if (lesson) {
     const why = mountUser(Object.entries(lesson.files).map(([p, b]) => [p, base64Bytes(b)]));
     if (why) refuse(why);
+    else { editor.setFolder("lesson:" + (lesson.name || lessonUrl || document.title)); editor.restoreDrafts("/user"); }
   } else {
     listScripts();
+    editor.setFolder("bundled");
+    editor.restoreDrafts("/lesson");
   }
   // A lesson opened with no script named draws its first script.
   if (lesson && !query.get("check") && !query.get("render") && !query.get("view") && select.length)
