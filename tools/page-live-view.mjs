@@ -10,6 +10,8 @@
 // reloaded, restored }, each of the last four the page's state then
 // (exit, errors, value, diagnostics, the editor's file, cursor line,
 // marked lines and messages, text).
+// With SHEET=NAME=V1,V2,... in the environment, the page's Save sheet too
+// (OUT_DIR/sheet.png).
 //   NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs PAGE_URL SCRIPT SHADER LINE OUT_DIR NAME=FRACTION...
 // SHADER (its path as the script's diagnostics name it) gets an undeclared name on LINE; FRACTION is where
 // along the slider the mouse presses (0 its left end, 1 its right).
@@ -52,6 +54,11 @@ for (const drag of drags) {
   result.sliders.push({ name, value, drawn });
   savePng(`slider-${name}.png`, await page.evaluate("glimmerPage.snapshot()"));
 }
+
+// Save sheet, varying the first slider over three values (the other at
+// what its drag left): OUT_DIR/sheet.png.
+if (process.env.SHEET) savePng("sheet.png", await page.evaluate(`glimmerPage.sheet(${JSON.stringify(process.env.SHEET)})`));
+await frames();
 
 // A typo typed into the page's editor at the end of LINE of SHADER (real
 // key input into CodeMirror); the page reloads the script once typing stops.

@@ -172,7 +172,7 @@ fi
 # page; Revert brings the file back and the error goes.
 mkdir "$pictures/live"
 echo "  the live view: sliders, a broken shader edit"
-live="$(NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs "file://$page" scripts/bloom.glib \
+live="$(SHEET=uAdd=0,2,4 NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs "file://$page" scripts/bloom.glib \
           shaders/bloom.frag 13 "$pictures/live" uAdd=0.5 uHalfSize=0.3 2>&1)"
 field() { python3 -c 'import json, sys; r = json.loads(sys.argv[1]); print(eval(sys.argv[2], {}, r))' "$live" "$1" 2>/dev/null; }
 add="$(field 'sliders[0]["value"]')" half="$(field 'sliders[1]["value"]')"
@@ -194,6 +194,16 @@ for pair in "slider-uAdd.png|live_add.png|uAdd=$add" "slider-uHalfSize.png|live_
     echo "DIFFERS: the live view after its slider ($what) is not render's picture with --set"
   fi
 done
+# Save sheet (uAdd 0, 2, 4 with uHalfSize where its slider left it) is
+# `glimmer sheet`'s, title and labels included.
+"$g" -q sheet scripts/bloom.glib --vary uAdd=0,2,4 --set "uHalfSize=$half" --size 512x512 -o "$pictures/live_sheet.png"
+echo "  the page's Save sheet against glimmer sheet"
+if [ -s "$pictures/live/sheet.png" ] && same_picture "$pictures/live/sheet.png" "$pictures/live_sheet.png"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: the page's sheet is not glimmer sheet's"
+fi
 want="shaders/bloom.frag:13:52: error: 'undeclaredTypo': undeclared identifier"
 check_live() {  # DESCRIPTION PYTHON-CONDITION over the page's states
   if python3 -c 'import json, sys; r = json.loads(sys.argv[1]); sys.exit(0 if eval("(" + sys.argv[2] + ")", {}, r) else 1)' \

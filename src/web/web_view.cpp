@@ -25,6 +25,8 @@
 //       by index (a slider reaches only the passes after it).
 //   glimmer_view_snapshot() -> 1 when the picture on show (without the panel)
 //       is now in glimmer_pixels; 0 when no script has drawn yet.
+//   glimmer_view_sheet(vary), glimmer_view_sheet_suggestion(): Save sheet
+//       (below).
 //   glimmer_view_messages() -> the last load's diagnostics for the editor, a
 //       line each: severity, file, line, column, message, tab-separated.
 //   glimmer_view_files() -> the script and its shader files, a line each.
@@ -38,6 +40,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <memory>
 #include <set>
@@ -46,6 +49,7 @@
 
 #include <fmt/format.h>
 
+#include "app/sheet_drawing.h"
 #include "driver/console.h"
 #include "driver/prepare_script.h"
 #include "gl/window_frame.h"
@@ -342,6 +346,68 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_snapshot() {
     const ViewerState& s = viewer->s;
     glimmer_web::pagePicture() = s.shownTexture < 0 ? s.renderer->readScreen() : s.renderer->readTexture(s.shownTexture);
     return glimmer_web::pagePicture().empty() ? 0 : 1;
+}
+
+// The page's Save sheet, as `glimmer sheet SCRIPT --vary ...` draws it: the
+// cells at the picture's size, the other uniforms at the panel's values
+// (named in the title where they differ from the script's). `vary` is one
+// or two NAME=V1,V2,... separated by ';'. 0: the sheet is in
+// glimmer_pixels; 2: a bad --vary (the message in glimmer_last_output).
+EMSCRIPTEN_KEEPALIVE int glimmer_view_sheet(const char* vary) {
+    if (!viewer || !viewer->s.good || !viewer->s.renderer) return 2;
+    ViewerState& s = viewer->s;
+    const Plan& plan = s.good->plan;
+    std::vector<SheetAxis> axes;
+    for (const std::string& text : glimmer_web::splitSets(vary ? vary : "")) {
+        SheetAxis a;
+        std::string trimmed = text.substr(text.find_first_not_of(' ') == std::string::npos ? 0 : text.find_first_not_of(' '));
+        if (!parseSheetAxis(trimmed, a)) {
+            glimmer_web::setLastOutput(fmt::format("glimmer: error: --vary '{}' is not NAME=V1,V2,...\n", text));
+            return 2;
+        }
+        axes.push_back(a);
+    }
+    if (axes.empty() || axes.size() > 2) {
+        glimmer_web::setLastOutput("glimmer: error: a sheet varies one or two uniforms: NAME=V1,V2,...[; NAME=V1,V2,...]\n");
+        return 2;
+    }
+    SheetAxis rows = axes.size() > 1 ? axes[1] : SheetAxis{};
+    Diagnostics diags;
+    if (!checkSheetValues(plan, *s.values, axes[0], rows, diags)) {
+        std::ostringstream out;
+        printDiagnostics(diags, s.good->sources, out);
+        glimmer_web::setLastOutput(out.str());
+        return 2;
+    }
+    std::string title = std::filesystem::path(viewer->script).filename().string();
+    UniformValues defaults(plan);
+    for (const auto& c : mergedUniforms(plan, s.splitUniforms)) {
+        if (c.name == axes[0].name || c.name == rows.name) continue;
+        std::vector<double> now = s.values->get(c.programs.front(), c.name);
+        if (now == defaults.get(c.programs.front(), c.name)) continue;
+        std::string text;
+        for (double x : now) text += (text.empty() ? "" : ",") + fmt::format("{:g}", x);
+        title += "   " + c.name + " = " + text;
+    }
+    glimmer_web::pagePicture() = drawSheet(*s.renderer, plan, *s.values, axes[0], rows, title);
+    s.drawAll = true;  // the sheet drew over the view's targets
+    glimmer_web::setLastOutput("");
+    return 0;
+}
+
+// A sheet to suggest: the first slider from its minimum to its maximum in
+// three steps ("uAdd=0,2,4"); "" when the script has none.
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_sheet_suggestion() {
+    static std::string text;
+    text.clear();
+    if (!viewer || !viewer->s.good) return text.c_str();
+    for (const auto& c : mergedUniforms(viewer->s.good->plan))
+        if (c.setting->form == UniformSetting::Form::Range) {
+            double lo = c.setting->min, hi = c.setting->max;
+            text = fmt::format("{}={:g},{:g},{:g}", c.name, lo, (lo + hi) / 2, hi);
+            break;
+        }
+    return text.c_str();
 }
 
 EMSCRIPTEN_KEEPALIVE const char* glimmer_view_messages() { return viewer ? viewer->messages.c_str() : ""; }

@@ -229,6 +229,8 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     save.disabled = !shows;
     if (!shows) return exit;
     savedName = path.split("/").pop().replace(/\.glib$/, "") + ".png";
+    if (!wasLive || wasLive.path !== path || wasLive.root !== root)
+      vary.value = glimmer.UTF8ToString(glimmer._glimmer_view_sheet_suggestion());
     glimmer._glimmer_view_frame(0);  // the first picture, then the canvas at the layout's size
     canvas.width = glimmer._glimmer_view_width();
     canvas.height = glimmer._glimmer_view_height();
@@ -274,6 +276,17 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
   };
   document.getElementById("revert").onclick = () => editor.revertCurrent();
 
+  // Save sheet: `glimmer sheet`'s labelled grid of the picture at several
+  // values (one or two NAME=V1,V2,...), the other sliders as they are now.
+  const vary = document.getElementById("vary");
+  document.getElementById("save-sheet").onclick = () => {
+    if (!live) return;
+    const exit = glimmer.ccall("glimmer_view_sheet", "number", ["string"], [vary.value]);
+    if (exit !== 0) { refuse(output().trim()); return; }
+    keepPicture();
+    download(live.path.split("/").pop().replace(/\.glib$/, "") + "-sheet.png");
+  };
+
   canvas.tabIndex = 0;  // the panel's text fields take keys once the canvas is clicked
   canvas.addEventListener("mousedown", () => canvas.focus());
   document.getElementById("check").onclick = () => runCheck(select.value);
@@ -293,6 +306,7 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     writeFile: (path, text) => FS.writeFile(path, text),
     reload: () => live && runView(live.root + ":" + live.path, live.width, live.height, ""),
     editor: () => editor,
+    sheet: (text) => { vary.value = text; document.getElementById("save-sheet").click(); return picture.dataset.png || ""; },
   };
 
   // A folder picked or dropped: its files, their paths below the folder.
