@@ -2,8 +2,9 @@
 # The browser build against the desktop build (issue 20), in headless
 # Chromium (SwiftShader's WebGL 2, no GPU needed):
 # - every bundled script checked in the page prints exactly the diagnostics
-#   and exit status that the desktop's `glimmer check` prints, and a missing
-#   script is refused the same way;
+#   and exit status that the desktop's `glimmer check --web` prints (shaders
+#   translated for WebGL 2 in both), and a missing script is refused the
+#   same way;
 # - a script drawn in the page is the picture `glimmer render` draws of it,
 #   within what two rasterizers may differ by: an ES scene at its default
 #   and with a value set as --set sets it (which must change the picture),
@@ -44,10 +45,12 @@ print(exit_.group(1) if exit_ else "no-result")
 # the text only: each "file:line:col:" line is a link to the editor (a span)
 sys.stdout.write(html.unescape(re.sub(r"<[^>]+>", "", diag.group(1))) if diag else "")'
 }
-# The bundled scripts compile cleanly on the desktop, so its `check` says
-# nothing a GL driver alone could say, and the outputs must be equal.
-for script in $(find scripts -name '*.glib' | sort) scripts/no_such_script.glib; do
-  want="$( { "$g" check "$script" 2>&1 >/dev/null; echo "exit $?" >&3; } 3>&1 )"
+# The page's Check is `glimmer check --web`: read, plan, read the files and
+# translate every shader, with no GL, so the two must print the same bytes:
+# every bundled script, the web test scripts (one with a geometry shader
+# WebGL 2 lacks, one with a shader error) and a missing script.
+for script in $(find scripts tests/data/web -name '*.glib' | sort) scripts/no_such_script.glib; do
+  want="$( { "$g" check --web "$script" 2>&1 >/dev/null; echo "exit $?" >&3; } 3>&1 )"
   desktop_exit="$(tail -1 <<<"$want" | sed 's/exit //')"
   desktop_diags="$(sed '$d' <<<"$want")"
   got="$(in_browser "$script")"

@@ -1,11 +1,12 @@
-// The browser build's entry point, first step: `glimmer check` of a script
-// without GL (read, parse, plan; the diagnostics printed exactly as the
-// desktop prints them), over files the page has put into Emscripten's
-// in-memory file system. The renderer's WebGL 2 path comes next (issue 20);
-// this is the same lang/plan code as the desktop build, not a fork.
+// The page's Check: `glimmer check --web` of a script without GL (read,
+// parse, plan, read its files, translate every shader to GLSL ES 3.00; the
+// diagnostics printed exactly as the desktop prints them), over files the
+// page has put into Emscripten's in-memory file system: the same lang,
+// plan and translator code as the desktop build, not a fork.
 //
 // Contract, for the page (src/web/page/glimmer-page.js):
 //   glimmer_check(path)        -> 0 no errors, 1 errors, 2 the file cannot be read
+//                                 (`glimmer check --web`'s exit codes)
 //   glimmer_last_output()      -> the diagnostics of the last check, as the
 //                                 desktop's `glimmer check` prints them to stderr
 #include <emscripten/emscripten.h>
@@ -15,6 +16,8 @@
 
 #include "driver/console.h"
 #include "driver/load_script.h"
+#include "driver/prepare_script.h"
+#include "driver/web_check.h"
 #include "web/page_state.h"
 
 namespace {
@@ -33,6 +36,12 @@ EMSCRIPTEN_KEEPALIVE int glimmer_check(const char* path) {
     glimmer::Diagnostics diags;
     glimmer::LoadedScript loaded;
     bool read = glimmer::loadScript(path ? path : "", glimmer::PlanOptions{}, diags, loaded);
+    // Then, as `glimmer check --web`: every file read, every shader
+    // translated for WebGL 2 (what the page will say when it draws).
+    if (read && !diags.hasErrors()) {
+        glimmer::loadFiles(loaded, true, diags);
+        glimmer::checkProgramsForWeb(loaded, diags);
+    }
     std::ostringstream out;
     glimmer::printDiagnostics(diags, loaded.sources, out);
     lastOutput = out.str();
