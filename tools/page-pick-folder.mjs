@@ -5,21 +5,34 @@
 // OUT.png. With SAVE_DIR, then presses Save PNG with downloads going to
 // SAVE_DIR and waits for the file. Prints the verdict and the diagnostics;
 // exits with the page's status (0 drawn, 1 script errors, 2 refused).
-//   NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs PAGE_URL FOLDER OUT.png [SAVE_DIR]
+// With --drop, the folder is dragged onto the page and dropped instead (the
+// DevTools protocol's drag events, as a file manager's drag would send).
+//   NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs [--drop] PAGE_URL FOLDER OUT.png [SAVE_DIR]
 import { existsSync, readdirSync, writeFileSync } from "node:fs";
 import { openPage, sleep } from "./cdp-page.mjs";
 
-const [url, folder, out, saveDir] = process.argv.slice(2);
+const args = process.argv.slice(2);
+const drop = args[0] === "--drop" ? args.shift() : null;
+const [url, folder, out, saveDir] = args;
 if (!out) {
   console.error("usage: NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs PAGE_URL FOLDER OUT.png");
   process.exit(2);
 }
 const page = await openPage(url);
 await page.navigate();
-const doc = await page.send("DOM.getDocument");
-const input = await page.send("DOM.querySelector", { nodeId: doc.result.root.nodeId, selector: "#folder" });
-const set = await page.send("DOM.setFileInputFiles", { nodeId: input.result.nodeId, files: [folder] });
-if (set.error) { console.error("cannot pick the folder: " + set.error.message); page.close(1); }
+if (drop) {
+  // Dragged from a file manager and let go over the page.
+  const data = { items: [], files: [folder], dragOperationsMask: 1 };
+  for (const type of ["dragEnter", "dragOver", "drop"]) {
+    const sent = await page.send("Input.dispatchDragEvent", { type, x: 200, y: 200, data });
+    if (sent.error) { console.error(`cannot drop the folder (${type}): ${sent.error.message}`); page.close(1); }
+  }
+} else {
+  const doc = await page.send("DOM.getDocument");
+  const input = await page.send("DOM.querySelector", { nodeId: doc.result.root.nodeId, selector: "#folder" });
+  const set = await page.send("DOM.setFileInputFiles", { nodeId: input.result.nodeId, files: [folder] });
+  if (set.error) { console.error("cannot pick the folder: " + set.error.message); page.close(1); }
+}
 // The page answers a picked folder by drawing (or refusing) it: wait for
 // the verdict to change from the page's start.
 let result;

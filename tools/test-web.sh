@@ -156,6 +156,16 @@ else
   failed=$((failed + 1))
   echo "DIFFERS: the picked folder did not draw render's picture"
 fi
+# The same folder dropped on the page (dragged from a file manager).
+echo "  a dropped glman folder against render"
+if NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs --drop "file://$page" "$pictures/picked" \
+     "$pictures/dropped.png" >/dev/null 2>&1 \
+   && same_picture "$pictures/dropped.png" "$pictures/picked_desktop.png"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: the dropped folder did not draw render's picture"
+fi
 # Its Save PNG button downloaded that picture, named after the script.
 if cmp -s "$pictures/downloads/teapot.png" "$pictures/picked.png"; then
   passed=$((passed + 1))
