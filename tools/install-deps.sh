@@ -29,6 +29,7 @@ test_packages=(
   emscripten chromium                 # the browser build (src/web) and its headless test (tools/test-web.sh)
   node-ws                             # the page driven over the DevTools protocol (tools/cdp-page.mjs)
   libjs-codemirror                    # the page's code editor (CodeMirror 5, src/web/page/glimmer-editor.js)
+  python3-fonttools                   # the page's panel fonts cut to Latin-1 (src/web/CMakeLists.txt)
   dpkg-dev                            # apt-get source: glslang and SPIRV-Cross for the browser build (src/web/third_party.cmake)
 )
 case "${1:-all}" in

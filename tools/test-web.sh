@@ -29,8 +29,10 @@ passed=0 failed=0
 # The DOM of the page at URL once it has run (SwiftShader's WebGL 2, virtual
 # time); further arguments are Chromium flags: --allow-file-access-from-files
 # where the page reads files beside it (a packed lesson must open without).
+# 180 s: on two cores shared with a build, the 7 MB packed lesson once took
+# past a minute to start (a killed Chromium dumps nothing).
 page_dom() {
-  timeout 60 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
+  timeout 180 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
     --enable-unsafe-swiftshader --virtual-time-budget=10000 "${@:2}" --dump-dom "$1" 2>/dev/null
 }
 # What the page shows for ?check=PATH: "EXIT\nDIAGNOSTICS", read from the DOM.
