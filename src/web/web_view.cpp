@@ -396,15 +396,18 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_sheet(const char* vary) {
 }
 
 // A sheet to suggest: the first slider from its minimum to its maximum in
-// three steps ("uAdd=0,2,4"); "" when the script has none.
+// three steps ("uAdd=0,2,4"; an int's middle rounded); "" when the script
+// has none.
 EMSCRIPTEN_KEEPALIVE const char* glimmer_view_sheet_suggestion() {
     static std::string text;
     text.clear();
     if (!viewer || !viewer->s.good) return text.c_str();
     for (const auto& c : mergedUniforms(viewer->s.good->plan))
         if (c.setting->form == UniformSetting::Form::Range) {
-            double lo = c.setting->min, hi = c.setting->max;
-            text = fmt::format("{}={:g},{:g},{:g}", c.name, lo, (lo + hi) / 2, hi);
+            double lo = c.setting->min, hi = c.setting->max, mid = (lo + hi) / 2;
+            if (viewer->s.renderer && viewer->s.renderer->uniformKind(c.programs.front(), c.name) == Renderer::UniformKind::Int)
+                mid = std::round(mid);
+            text = fmt::format("{}={:g},{:g},{:g}", c.name, lo, mid, hi);
             break;
         }
     return text.c_str();
