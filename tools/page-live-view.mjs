@@ -13,7 +13,8 @@
 // With SHEET=NAME=V1,V2,... in the environment, the page's Save sheet too
 // (OUT_DIR/sheet.png).
 //   NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs PAGE_URL SCRIPT SHADER LINE OUT_DIR NAME=FRACTION...
-// SHADER (its path as the script's diagnostics name it) gets an undeclared name on LINE; FRACTION is where
+// SHADER (its path as the script's diagnostics name it) gets an undeclared name on LINE
+// (SHADER "-": the sliders only); FRACTION is where
 // along the slider the mouse presses (0 its left end, 1 its right).
 import { writeFileSync } from "node:fs";
 import { join } from "node:path";
@@ -59,6 +60,12 @@ for (const drag of drags) {
 // what its drag left): OUT_DIR/sheet.png.
 if (process.env.SHEET) savePng("sheet.png", await page.evaluate(`glimmerPage.sheet(${JSON.stringify(process.env.SHEET)})`));
 await frames();
+
+if (shader === "-") {  // sliders only
+  console.log(JSON.stringify(result));
+  page.close(0);
+  await new Promise(() => {});  // close() ends the process once Chromium has gone
+}
 
 // A typo typed into the page's editor at the end of LINE of SHADER (real
 // key input into CodeMirror); the page reloads the script once typing stops.

@@ -246,6 +246,26 @@ check_live "the typed edit must survive a reload of the page" \
 check_live "Revert must bring back the file, clear the error and keep nothing" \
   "restored['exit'] == 0 and restored['errors'] == 0 and restored['kept'] == 0 and 'undeclaredTypo' not in restored['text']"
 
+# A uniform the shaders read and the script never sets (issue 19): the
+# panel offers it a slider; moved, the picture is that of the script with
+# the value written on its Program line (tests/data/web/unset.glib). The
+# press goes 30% along the control: its label is long, and past the
+# slider's frame a press does nothing.
+echo "  a uniform the script never sets, moved in the panel"
+unset_live="$(NODE_PATH=/usr/share/nodejs node tools/page-live-view.mjs "file://$page" tests/data/web/unset.glib \
+                - - "$pictures/live" uBright=0.3 2>&1)"
+bright="$(python3 -c 'import json, sys; r = json.loads(sys.argv[1]); print(r["sliders"][0]["value"])' "$unset_live" 2>/dev/null)"
+sed "s/^Program Forgot uStripes <1. 6. 12.>/& uBright <0. $bright 1.>/" tests/data/web/unset.glib > "$pictures/unset_set.glib"
+cp tests/data/web/compat_pattern.vert tests/data/web/unset.frag "$pictures/"
+"$g" -q render "$pictures/unset_set.glib" --size 512x512 -o "$pictures/unset_desktop.png"
+if [ -n "$bright" ] && [ "$bright" != 0 ] && grep -q '"drawn":"0"' <<<"$unset_live" &&
+   same_picture "$pictures/live/slider-uBright.png" "$pictures/unset_desktop.png"; then
+  passed=$((passed + 1))
+else
+  failed=$((failed + 1))
+  echo "DIFFERS: the panel's control for the unset uBright (at $bright) is not render's picture with it set: $unset_live"
+fi
+
 # A lesson whose file would leave the page's /user folder is refused as a
 # whole, with the reason, and nothing is drawn.
 printf 'globalThis.glimmerLesson = {"files": {"a.glib": "", "../escape.glib": ""}};\n' > "$pictures/hostile.js"

@@ -16,6 +16,7 @@
 #include "gl/gl_api.h"
 #include "gl/shader_build.h"
 #include "gl/uniform_upload.h"
+#include "gl/unset_uniforms.h"
 #include "image/cubemap.h"
 #include "image/noise.h"
 
@@ -371,6 +372,13 @@ unsigned Renderer::textureName(int texture) const {
     if (texture < 0) return screenTexture_;
     if (size_t(texture) >= textures_.size()) return 0;
     return textures_[size_t(texture)].id;
+}
+
+std::vector<UnsetUniform> Renderer::unsetUniforms(int program) const {
+    if (program < 0 || size_t(program) >= programs_.size() || !programs_[size_t(program)] ||
+        size_t(program) >= plan_->programs.size())
+        return {};
+    return glimmer::unsetUniforms(plan_->programs[size_t(program)], programs_[size_t(program)]->uniforms);
 }
 
 Renderer::UniformKind Renderer::uniformKind(int program, const std::string& name) const {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "gl/proc_address.h"
+#include "gl/unset_uniform.h"
 #include "image/image.h"
 #include "lang/diagnostics.h"
 #include "plan/plan.h"
@@ -116,6 +117,9 @@ public:
     // kind; Unknown when the program was not built or does not use it.
     enum class UniformKind { Unknown, Float, Int, Bool, Sampler, Other };
     UniformKind uniformKind(int program, const std::string& name) const;
+    // The uniforms its shaders read and the script never sets (they stay 0
+    // until a value comes: the viewer's panel offers a control for each).
+    std::vector<UnsetUniform> unsetUniforms(int program) const;
     // glman's mouse rotate and zoom: turns and scales everything drawn to the
     // screen about the world origin as seen by the eye. It goes into the
     // projection, so shaders see the script's own ModelView matrix.

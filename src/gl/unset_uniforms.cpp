@@ -28,24 +28,33 @@ std::string example(const std::string& name, const std::string& type) {
 
 }  // namespace
 
-void warnUnsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
-                       const std::vector<std::optional<std::string>>& texts, const std::string& scriptFile,
-                       Diagnostics& diags) {
+std::vector<UnsetUniform> unsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active) {
+    std::vector<UnsetUniform> out;
     for (const auto& u : active) {
         if (isSamplerType(u.type) || builtIn(u.name)) continue;
         bool set = false;
         for (const auto& s : decl.uniforms) set = set || s.name == u.name;
         if (set) continue;
+        std::string type = uniformTypeName(u.type);
+        out.push_back({u.name, type, int(u.size), u.size > 1 ? std::string() : example(u.name, type)});
+    }
+    return out;
+}
+
+void warnUnsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
+                       const std::vector<std::optional<std::string>>& texts, const std::string& scriptFile,
+                       Diagnostics& diags) {
+    for (const auto& u : unsetUniforms(decl, active)) {
         // Where its shader declares it: the first stage that does.
         std::string where;
         for (size_t k = 0; k < decl.stages.size() && where.empty(); ++k)
             if (k < texts.size() && texts[k])
                 if (int line = uniformDeclarationLine(*texts[k], u.name); line > 0)
                     where = fmt::format(" ({}:{})", decl.stages[k].shown, line);
-        std::string type = uniformTypeName(u.type) + (u.size > 1 ? fmt::format("[{}]", u.size) : "");
+        std::string type = u.type + (u.size > 1 ? fmt::format("[{}]", u.size) : "");
         const bool scalar = u.size == 1 && (type == "float" || type == "int");
         std::string value = type == "bool" ? "false" : scalar ? "0" : "all 0";
-        std::string add = example(u.name, type);
+        const std::string& add = u.example;
         diags.warning(scriptFile, decl.loc,
                       fmt::format("Program {} reads uniform {} {}{} but the script never sets it, so it stays {}; "
                                   "give it a value{} on this Program line{}",

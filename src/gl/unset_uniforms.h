@@ -9,14 +9,18 @@
 #include <vector>
 
 #include "gl/uniform_upload.h"
+#include "gl/unset_uniform.h"
 
 namespace glimmer {
 
+// The uniforms of `active` that `decl` does not set. Left out: samplers
+// (they read unit 0 unless set, which the sampler-kind check covers),
+// glman's built-ins (Timer, Noise2, Noise3), Glimmer's fed compatibility
+// stand-ins (glimmer_*) and struct members.
+std::vector<UnsetUniform> unsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active);
+
 // One warning per uniform of `active` that `decl` does not set, at the
-// Program's line. Left out: samplers (they read unit 0 unless set, which
-// the sampler-kind check covers), glman's built-ins (Timer, Noise2, Noise3),
-// Glimmer's fed compatibility stand-ins (glimmer_*) and struct members.
-// `texts` are the stages' shader texts, in the order of decl.stages.
+// Program's line (those of unsetUniforms). `texts` are the stages' shader texts, in the order of decl.stages.
 void warnUnsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
                        const std::vector<std::optional<std::string>>& texts, const std::string& scriptFile,
                        Diagnostics& diags);

@@ -74,6 +74,43 @@ void control(ViewerState& s, const UniformControl& c) {
     }
 }
 
+// A uniform the shaders read and the script never sets (it is 0 until moved
+// here): a slider from 0 to 1 (an int's to 10), a checkbox, or a drag per
+// component, so a student sees what it does; the tooltip gives the line
+// that keeps a value in the script. A reload that works forgets it, as
+// the script does not have it.
+int componentsOf(const UnsetUniform& u) { return u.type == "vec2" ? 2 : u.type == "vec3" ? 3 : u.type == "vec4" ? 4 : 1; }
+
+void unsetControl(ViewerState& s, int program, const UnsetUniform& u) {
+    std::vector<double> v = s.values->get(program, u.name);
+    int n = componentsOf(u);
+    if (u.size != 1 || (n == 1 && u.type != "float" && u.type != "int" && u.type != "bool")) {
+        ImGui::TextDisabled("%s %s = 0 (not set by the script)", u.type.c_str(), u.name.c_str());
+        return;
+    }
+    v.resize(size_t(n), 0.0);
+    std::string label = u.name + "  (not set)";
+    bool changed = false;
+    if (u.type == "int") {
+        int i = clampToInt(v[0]);
+        changed = ImGui::SliderInt(label.c_str(), &i, 0, 10);
+        v[0] = i;
+    } else if (u.type == "bool") {
+        bool b = v[0] != 0;
+        changed = ImGui::Checkbox(label.c_str(), &b);
+        v[0] = b ? 1 : 0;
+    } else {
+        float f[4] = {float(v[0]), n > 1 ? float(v[1]) : 0.f, n > 2 ? float(v[2]) : 0.f, n > 3 ? float(v[3]) : 0.f};
+        changed = n == 1 ? ImGui::SliderFloat(label.c_str(), f, 0.f, 1.f) : ImGui::DragScalarN(label.c_str(), ImGuiDataType_Float, f, n, 0.01f);
+        for (int k = 0; k < n; ++k) v[size_t(k)] = f[k];
+    }
+    ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    s.controlRects[u.name] = {at.x, at.y, size.x, size.y};
+    if (ImGui::IsItemHovered() && !u.example.empty())
+        ImGui::SetTooltip("not in the script: add '%s' to the Program line to keep a value", u.example.c_str());
+    if (changed) s.values->set(program, u.name, v);
+}
+
 bool hasSlider(const std::vector<const UniformControl*>& controls) {
     for (const auto* c : controls) {
         auto f = c->setting->form;
@@ -93,13 +130,14 @@ void controls(ViewerState& s) {
         std::vector<const UniformControl*> mine;
         for (const auto& c : all)
             if (c.programs.front() == int(p)) mine.push_back(&c);
-        bool mergedAway = mine.empty() && !decl.uniforms.empty();
+        std::vector<UnsetUniform> unset = s.renderer ? s.renderer->unsetUniforms(int(p)) : std::vector<UnsetUniform>{};
+        bool mergedAway = mine.empty() && !decl.uniforms.empty() && unset.empty();
         if (mergedAway) continue;  // every uniform it has is a control of an earlier group
         ImGui::PushID(int(p));
         std::string header = fmt::format("{}  (line {})###program", decl.name, decl.loc.line);
         // Open when it has a slider of its own (a merged one lives in the
         // first Program's group).
-        bool sliders = hasSlider(mine);
+        bool sliders = hasSlider(mine) || !unset.empty();
         if (ImGui::CollapsingHeader(header.c_str(), sliders ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
             if (!decl.notes.empty()) {  // what the script says this pass does (MessageBox, ## comments)
                 ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.85f, 1.f, 1.f));
@@ -107,9 +145,19 @@ void controls(ViewerState& s) {
                 ImGui::PopStyleColor();
             }
             for (const auto* c : mine) control(s, *c);
+            if (!unset.empty()) {
+                ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.8f, 0.35f, 1.f));
+                ImGui::TextWrapped("read by the shaders, never set by the script (0 until moved here):");
+                ImGui::PopStyleColor();
+                for (const auto& u : unset) unsetControl(s, int(p), u);
+            }
             if (sliders && ImGui::Button("Reset")) {
                 for (const auto* c : mine)
                     for (int q : c->programs) s.values->set(q, c->name, c->setting->values);
+                // Back to the 0 OpenGL gave them (an empty value would upload
+                // nothing and leave the program's last one).
+                for (const auto& u : unset)
+                    if (!s.values->get(int(p), u.name).empty()) s.values->set(int(p), u.name, std::vector<double>(size_t(componentsOf(u)), 0.0));
             }
         }
         ImGui::PopID();
