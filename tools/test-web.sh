@@ -26,6 +26,10 @@ page="$(realpath "$web")/src/web/index.html"
 profile="$(mktemp -d)"
 trap 'rm -rf "$profile"' EXIT
 passed=0 failed=0
+# Counts one check: STATUS (0 passed) and what differs when it did not.
+tally() {
+  if [ "$1" -eq 0 ]; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "DIFFERS: $2"; fi
+}
 # The DOM of the page at URL once it has run (SwiftShader's WebGL 2, virtual
 # time); further arguments are Chromium flags: --allow-file-access-from-files
 # where the page reads files beside it (a packed lesson must open without).
@@ -113,12 +117,8 @@ for case in "tests/data/web/lit_es.glib||256x256" "tests/data/web/lit_es.glib|uS
   [ "$script" = tests/data/web/lit_es.glib ] && cp "$shot" "$pictures/page_${sets:-default}.png" 2>/dev/null
 done
 # The set value reached the picture: the two page pictures differ.
-if [ "$(compare -metric AE "$pictures/page_default.png" "$pictures/page_uStripes=3.png" null: 2>&1)" -gt 1000 ]; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: uStripes=3 did not change the page's picture"
-fi
+[ "$(compare -metric AE "$pictures/page_default.png" "$pictures/page_uStripes=3.png" null: 2>&1)" -gt 1000 ]
+tally $? "uStripes=3 did not change the page's picture"
 
 # A lesson packed into one HTML file opens from disk with no server and no
 # file-access flag, and draws its script as render does.
@@ -129,15 +129,11 @@ page_dom "file://$pictures/lesson.html" |
   python3 -c '
 import base64, re, sys
 m = re.search(r"data-png=\"data:image/png;base64,([^\"]*)\"", sys.stdin.read())
-sys.stdout.buffer.write(base64.b64decode(m.group(1)) if m else b"")' > "$pictures/packed.png"
+sys.stdout.buffer.write(base64.b64decode(m.group(1)) m else b"")' > "$pictures/packed.png"
 "$g" -q render "$pictures/lesson/lit_es.glib" --size 512x512 -o "$pictures/packed_desktop.png"
 echo "  a packed lesson, opened from disk, against render"
-if [ -s "$pictures/packed.png" ] && same_picture "$pictures/packed.png" "$pictures/packed_desktop.png"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: the packed lesson did not draw render's picture"
-fi
+if [ -s "$pictures/packed.png" ] && same_picture "$pictures/packed.png" "$pictures/packed_desktop.png"
+tally $? "the packed lesson did not draw render's picture"
 
 # A user picks a glman classroom folder (script, shaders) with the page's
 # folder button (tools/page-pick-folder.mjs sets it as the dialog would):
@@ -150,31 +146,19 @@ cp tests/data/glman/pass.vert tests/data/glman/lit.frag "$pictures/picked/"
 "$g" -q render "$pictures/picked/teapot.glib" --size 512x512 -o "$pictures/picked_desktop.png"
 echo "  a picked glman folder against render"
 mkdir "$pictures/downloads"
-if NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs "file://$page" "$pictures/picked" "$pictures/picked.png" \
+NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs "file://$page" "$pictures/picked" "$pictures/picked.png" \
      "$pictures/downloads" >/dev/null 2>&1 \
-   && same_picture "$pictures/picked.png" "$pictures/picked_desktop.png"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: the picked folder did not draw render's picture"
-fi
+   && same_picture "$pictures/picked.png" "$pictures/picked_desktop.png"
+tally $? "the picked folder did not draw render's picture"
 # The same folder dropped on the page (dragged from a file manager).
 echo "  a dropped glman folder against render"
-if NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs --drop "file://$page" "$pictures/picked" \
+NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs --drop "file://$page" "$pictures/picked" \
      "$pictures/dropped.png" >/dev/null 2>&1 \
-   && same_picture "$pictures/dropped.png" "$pictures/picked_desktop.png"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: the dropped folder did not draw render's picture"
-fi
+   && same_picture "$pictures/dropped.png" "$pictures/picked_desktop.png"
+tally $? "the dropped folder did not draw render's picture"
 # Its Save PNG button downloaded that picture, named after the script.
-if cmp -s "$pictures/downloads/teapot.png" "$pictures/picked.png"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: Save PNG did not download the picture as teapot.png ($(ls "$pictures/downloads"))"
-fi
+cmp -s "$pictures/downloads/teapot.png" "$pictures/picked.png"
+tally $? "Save PNG did not download the picture as teapot.png ($(ls "$pictures/downloads"))"
 
 # The live view, as a student uses it (tools/page-live-view.mjs): the
 # seed bloom with the desktop's panel beside it; each slider dragged with
@@ -191,12 +175,8 @@ live="$(SHEET=uAdd=0,2,4 NODE_PATH=/usr/share/nodejs node tools/page-live-view.m
           shaders/bloom.frag 13 "$pictures/live" uAdd=0.5 uHalfSize=0.3 2>&1)"
 field() { python3 -c 'import json, sys; r = json.loads(sys.argv[1]); print(eval(sys.argv[2], {}, r))' "$live" "$1" 2>/dev/null; }
 add="$(field 'sliders[0]["value"]')" half="$(field 'sliders[1]["value"]')"
-if [ "$(field 'sliders[0]["drawn"]')" = "1" ] && [ "$(field 'sliders[1]["drawn"]')" = "0 1" ]; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: the passes a slider redrew (uAdd: want 1, uHalfSize: want 0 1): $live"
-fi
+[ "$(field 'sliders[0]["drawn"]')" = "1" ] && [ "$(field 'sliders[1]["drawn"]')" = "0 1" ]
+tally $? "the passes a slider redrew (uAdd: want 1, uHalfSize: want 0 1): $live"
 "$g" -q render scripts/bloom.glib --size 512x512 --set "uAdd=$add" -o "$pictures/live_add.png"
 "$g" -q render scripts/bloom.glib --size 512x512 --set "uAdd=$add" --set "uHalfSize=$half" -o "$pictures/live_half.png"
 for pair in "slider-uAdd.png|live_add.png|uAdd=$add" "slider-uHalfSize.png|live_half.png|uAdd=$add uHalfSize=$half"; do
@@ -213,32 +193,20 @@ done
 # `glimmer sheet`'s, title and labels included.
 "$g" -q sheet scripts/bloom.glib --vary uAdd=0,2,4 --set "uHalfSize=$half" --size 512x512 -o "$pictures/live_sheet.png"
 echo "  the page's Save sheet against glimmer sheet"
-if [ -s "$pictures/live/sheet.png" ] && same_picture "$pictures/live/sheet.png" "$pictures/live_sheet.png"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: the page's sheet is not glimmer sheet's"
-fi
+[ -s "$pictures/live/sheet.png" ] && same_picture "$pictures/live/sheet.png" "$pictures/live_sheet.png"
+tally $? "the page's sheet is not glimmer sheet's"
 want="shaders/bloom.frag:13:52: error: 'undeclaredTypo': undeclared identifier"
 check_live() {  # DESCRIPTION PYTHON-CONDITION over the page's states
-  if python3 -c 'import json, sys; r = json.loads(sys.argv[1]); sys.exit(0 if eval("(" + sys.argv[2] + ")", {}, r) else 1)' \
-       "$live" "$2" 2>/dev/null; then
-    passed=$((passed + 1))
-  else
-    failed=$((failed + 1))
-    echo "DIFFERS: $1: $live" | cut -c1-2000
-  fi
+  python3 -c 'import json, sys; r = json.loads(sys.argv[1]); sys.exit(0 if eval("(" + sys.argv[2] + ")", {}, r) else 1)' \
+    "$live" "$2" 2>/dev/null
+  tally $? "$1: $(cut -c1-2000 <<<"$live")"
 }
 check_live "a typo typed into bloom.frag must be one error, '$want', marked on line 13 of the editor, the value kept" \
   "broken['exit'] == 1 and broken['errors'] == 1 and \"$want\" in broken['diagnostics'] and broken['value'] == '$add'
    and broken['shown'] == 'shaders/bloom.frag' and broken['markedLines'] == '13'
    and \"'undeclaredTypo': undeclared identifier\" in broken['message']"
-if cmp -s "$pictures/live/broken.png" "$pictures/live/slider-uHalfSize.png"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: the broken edit did not keep the last good picture"
-fi
+cmp -s "$pictures/live/broken.png" "$pictures/live/slider-uHalfSize.png"
+tally $? "the broken edit did not keep the last good picture"
 check_live "clicking the error in the diagnostics must open bloom.frag at line 13" \
   "clicked['shown'] == 'shaders/bloom.frag' and clicked['cursorLine'] == 13"
 check_live "the typed edit must survive a reload of the page" \
@@ -258,25 +226,17 @@ bright="$(python3 -c 'import json, sys; r = json.loads(sys.argv[1]); print(r["sl
 sed "s/^Program Forgot uStripes <1. 6. 12.>/& uBright <0. $bright 1.>/" tests/data/web/unset.glib > "$pictures/unset_set.glib"
 cp tests/data/web/compat_pattern.vert tests/data/web/unset.frag "$pictures/"
 "$g" -q render "$pictures/unset_set.glib" --size 512x512 -o "$pictures/unset_desktop.png"
-if [ -n "$bright" ] && [ "$bright" != 0 ] && grep -q '"drawn":"0"' <<<"$unset_live" &&
-   same_picture "$pictures/live/slider-uBright.png" "$pictures/unset_desktop.png"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: the panel's control for the unset uBright (at $bright) is not render's picture with it set: $unset_live"
-fi
+[ -n "$bright" ] && [ "$bright" != 0 ] && grep -q '"drawn":"0"' <<<"$unset_live" &&
+   same_picture "$pictures/live/slider-uBright.png" "$pictures/unset_desktop.png"
+tally $? "the panel's control for the unset uBright (at $bright) is not render's picture with it set: $unset_live"
 
 # A lesson whose file would leave the page's /user folder is refused as a
 # whole, with the reason, and nothing is drawn.
 printf 'globalThis.glimmerLesson = {"files": {"a.glib": "", "../escape.glib": ""}};\n' > "$pictures/hostile.js"
 verdict="$(page_dom "file://$page?lesson=file://$pictures/hostile.js" --allow-file-access-from-files |
   grep -o '<p id="verdict"[^<]*')"
-if grep -q 'data-exit="2"' <<<"$verdict" && grep -Eq 'refused: the path ("|&quot;)\.\./escape\.glib("|&quot;) leaves the folder' <<<"$verdict"; then
-  passed=$((passed + 1))
-else
-  failed=$((failed + 1))
-  echo "DIFFERS: a lesson path leaving /user was not refused: $verdict"
-fi
+grep -q 'data-exit="2"' <<<"$verdict" && grep -Eq 'refused: the path ("|&quot;)\.\./escape\.glib("|&quot;) leaves the folder' <<<"$verdict"
+tally $? "a lesson path leaving /user was not refused: $verdict"
 
 echo "web: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -380,4 +380,22 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
     return asked;
 }
 
+std::vector<ViewCommand> drawPanelWindow(ViewerState& s, float x, float height, int& width, int& contentHeight) {
+    ImGui::SetNextWindowPos(ImVec2(x, 0.f), ImGuiCond_Always);
+    // Width 0: ImGui fits the panel's width to its content every frame.
+    ImGui::SetNextWindowSize(ImVec2(0.f, height), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(1.f);
+    ImGui::Begin("Glimmer", nullptr,
+                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
+                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
+    std::vector<std::pair<int, unsigned>> thumbs;
+    if (s.renderer)
+        for (int t : s.renderer->renderTargets()) thumbs.push_back({t, s.renderer->textureName(t)});
+    auto asked = drawPanel(s, thumbs);
+    contentHeight = int(ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y + 1);
+    width = int(ImGui::GetWindowWidth());
+    ImGui::End();
+    return asked;
+}
+
 }  // namespace glimmer

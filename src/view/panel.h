@@ -21,6 +21,12 @@ std::string overlayText(const ViewerState& s);
 // texture name for ImGui's backend to draw, 0 where none.
 std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<int, unsigned>>& thumbnails);
 
+// The panel as a window of its own, docked at x = `x` from the top, `height`
+// tall, as wide as its content: begins it, draws the panel with a
+// thumbnail of every render target, ends it. `width`, `contentHeight`: what
+// it measured, for the front end's layout (view/view_model.h layoutWindow).
+std::vector<ViewCommand> drawPanelWindow(ViewerState& s, float x, float height, int& width, int& contentHeight);
+
 // The ImGui fonts, at `scale`: DejaVu Sans (the panel) and DejaVu Sans Mono
 // (error messages, whose carets must line up). Falls back to ImGui's own
 // font scaled, with a warning on stderr, when no TTF file is found.

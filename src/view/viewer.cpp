@@ -305,21 +305,8 @@ private:
     std::vector<ViewCommand> panel(int fbw, int fbh) {
         int px, py, pw, ph;
         pictureRect(fbw, fbh, px, py, pw, ph);
-        ImGui::SetNextWindowPos(ImVec2(float(px + pw), 0.f), ImGuiCond_Always);
-        // Width 0: ImGui fits the panel's width to its content every frame.
-        ImGui::SetNextWindowSize(ImVec2(0.f, float(fbh)), ImGuiCond_Always);
-        ImGui::SetNextWindowBgAlpha(1.f);
-        ImGui::Begin("Glimmer", nullptr,
-                     ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                         ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
-        std::vector<std::pair<int, unsigned>> thumbs;
-        if (s_.renderer)
-            for (int t : s_.renderer->renderTargets()) thumbs.push_back({t, s_.renderer->textureName(t)});
-        auto asked = drawPanel(s_, thumbs);
-        panelH_ = int(ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y + 1);
-        panelW_ = int(ImGui::GetWindowWidth());
+        auto asked = drawPanelWindow(s_, float(px + pw), float(fbh), panelW_, panelH_);
         if (fullscreen_) panelW_ = std::min(panelW_, fbw / 2);
-        ImGui::End();
         return asked;
     }
 

@@ -270,16 +270,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
     drawChanged(v);
-    ImGui::SetNextWindowPos(ImVec2(float(v.layout.panelX), 0.f), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(0.f, float(v.layout.windowH)), ImGuiCond_Always);  // width: the content's
-    ImGui::SetNextWindowBgAlpha(1.f);
-    ImGui::Begin("Glimmer", nullptr,
-                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize |
-                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoBringToFrontOnFocus);
-    std::vector<std::pair<int, unsigned>> thumbs;
-    if (s.renderer)
-        for (int t : s.renderer->renderTargets()) thumbs.push_back({t, s.renderer->textureName(t)});
-    auto asked = drawPanel(s, thumbs);
+    auto asked = drawPanelWindow(s, float(v.layout.panelX), float(v.layout.windowH), v.panelW, v.panelH);
     for (auto [bit, kind] : {std::pair{1, ViewCommand::Kind::Reload}, std::pair{2, ViewCommand::Kind::Save}})
         if (v.keyAsks & bit) {
             ViewCommand c;
@@ -287,9 +278,6 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
             asked.push_back(c);
         }
     v.keyAsks = 0;
-    v.panelH = int(ImGui::GetCursorPosY() + ImGui::GetStyle().WindowPadding.y + 1);
-    v.panelW = int(ImGui::GetWindowWidth());
-    ImGui::End();
     ImGui::Render();
     v.frame->begin(v.layout.windowW, v.layout.windowH, 0.12f, 0.12f, 0.14f);
     presentPicture(s, v.layout.windowH, 0, 0, v.width, v.height);
