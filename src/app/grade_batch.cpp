@@ -201,7 +201,9 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
 
     std::map<std::string, std::string> rowHtml;
     auto lastWrite = std::chrono::steady_clock::now();
-    auto keep = [&](const GradeRow& r) {
+    auto keep = [&](GradeRow r) {
+        // Nothing to compare: still show what was asked for (the solution at its defaults).
+        if (r.solution.empty()) r.solution = fs::relative(solutionJob.outputs[0], out, ec).string();
         rows.push_back(r);
         recordOut << gradeRecord(r) << "\n";
         recordOut.flush();

@@ -2,7 +2,13 @@
 // in tests/data/grading/solution, one submission for each case a teacher
 // meets; --resume after a kill; shards joined by batch-merge.
 #include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <zip.h>
+
+#include <chrono>
+#include <thread>
 
 #include <filesystem>
 #include <fstream>
@@ -175,6 +181,58 @@ TEST(CliGrade, ResumeGradesOnlyWhatIsMissingAndEndsWithTheSameGrades) {
     EXPECT_EQ(countOf(resumed.err, "batch: 4/"), 0) << resumed.err;
     EXPECT_EQ(csvRows(out / "grades.csv"), before);
     EXPECT_EQ(countOf(readAll(out / "report.html"), "<tr class="), 5);
+}
+
+int lineCount(const fs::path& file) {
+    int n = 0;
+    for (char c : readAll(file)) n += c == '\n';
+    return n;
+}
+
+// The real thing: glimmer killed (SIGKILL, no chance to tidy up) after two
+// results, then --resume.
+TEST(CliGrade, AKilledRunResumedGradesTheRestAndEndsWithTheGradesOfOneRun) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class", out = dir.path() / "out";
+    const std::string frag = readAll(kSolution / "rings.frag");
+    for (int k = 0; k < 8; ++k)
+        student(cls / ("s" + std::to_string(k)), k % 3 ? frag : replaced(frag, "6.2831853 * uFreq", "6.2831853 * 6.0"));
+    auto args = gradeArgs(cls, out);
+    args[7] = "256x256";  // --size: slow enough to be killed halfway
+    args.back() = "1";    // --jobs
+    std::vector<std::string> full = {GLIMMER_BIN};
+    full.insert(full.end(), args.begin(), args.end());
+    pid_t pid = ::fork();
+    ASSERT_GE(pid, 0);
+    if (pid == 0) {
+        std::vector<char*> argv;
+        for (auto& a : full) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        std::freopen("/dev/null", "w", stderr);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    auto start = std::chrono::steady_clock::now();
+    while (lineCount(out / "grades.jsonl") < 2 && std::chrono::steady_clock::now() - start < std::chrono::seconds(60))
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+    ASSERT_TRUE(WIFSIGNALED(status));  // killed, not finished
+    const int kept = lineCount(out / "grades.jsonl");
+    ASSERT_GE(kept, 2);
+    ASSERT_LT(kept, 8);
+    args.push_back("--resume");
+    auto resumed = runGlimmer(args, 120);
+    ASSERT_EQ(resumed.exitCode, 0) << resumed.err;
+    const std::string rest = std::to_string(8 - kept);
+    EXPECT_EQ(countOf(resumed.err, "batch: " + rest + "/" + rest + " graded"), 1) << resumed.err;
+    args.pop_back();
+    args[5] = (dir.path() / "once").string();  // -o
+    auto once = runGlimmer(args, 120);
+    ASSERT_EQ(once.exitCode, 0) << once.err;
+    EXPECT_EQ(csvRows(out / "grades.csv"), csvRows(dir.path() / "once" / "grades.csv"));
+    EXPECT_EQ(lineCount(out / "grades.jsonl"), 8);
 }
 
 TEST(CliGrade, TheSandboxIsOnUnlessTurnedOffAndThenSaidOnce) {
