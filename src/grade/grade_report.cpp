@@ -63,7 +63,7 @@ std::string reportRowHtml(const GradeRow& r, const RowPictures& p) {
                                : fmt::format("SSIM {:.3f} · PSNR {}<br>worst at {}", r.ssim, htmlEscape(dB(r.psnr)),
                                              htmlEscape(r.worstSetting));
     return fmt::format(
-        "<tr class=\"{0}\"><td class=who><b>{1}</b><br><span class=v>{0}</span> <span class=score>{2}</span><br>"
+        "<tr class=\"{0}\" id=\"s-{1}\"><td class=who><b>{1}</b><br><span class=v>{0}</span> <span class=score>{2}</span><br>"
         "<small>{3:.2f} s</small></td>\n<td class=pics>{4}{5}{6}</td>\n<td class=why><small>{7}</small>"
         "{8}{9}</td></tr>\n",
         htmlEscape(r.verdict), htmlEscape(r.student), r.score, r.seconds, img(p.student, "student"),
@@ -94,6 +94,10 @@ std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows,
            "tr.error .v,.counts .error{color:#fff;background:#b00}\ntr.wrong .v,.counts .wrong{color:#fff;background:#d60}\n"
            "tr.look .v,.counts .look{background:#fd4}\ntr.pass .v,.counts .pass{color:#fff;background:#282}\n"
            "tr .v{padding:0 4px;border-radius:3px}\n"
+           ".glance{line-height:1.9;margin:0 0 10px}\n.glance a{display:inline-block;min-width:84px;padding:0 4px;"
+           "margin:0 2px 2px 0;font-size:12px;text-decoration:none;color:inherit;border-radius:3px;background:#eee}\n"
+           ".glance a.error{color:#fff;background:#b00}\n.glance a.wrong{color:#fff;background:#d60}\n"
+           ".glance a.look{background:#fd4}\n.glance a.pass{background:#cec}\n"
            "</style></head><body>\n";
     out += "<h1>Grades against " + htmlEscape(h.solution) + "</h1>\n";
     out += fmt::format("<p class=how>{} submissions{} · compared at {} setting{}: {} · {} · sandbox {}</p>\n",
@@ -105,7 +109,12 @@ std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows,
     for (const char* v : {"error", "wrong", "look", "pass"})
         out += fmt::format("<span class={0}>{1} {0}</span>", v, counts[v]);
     out += "<small>pictures: the student's, the solution's, their difference x4, at the worst setting</small></p>\n";
-    out += "<table>\n";
+    // At a glance: every student as a chip in the table's order, a link to its row.
+    out += "<p class=glance>";
+    for (const auto& r : rows)
+        out += fmt::format("<a class={} href=\"#s-{}\">{} {}</a>", htmlEscape(r.verdict), htmlEscape(r.student),
+                           htmlEscape(r.student), r.score);
+    out += "</p>\n<table>\n";
     for (const auto& row : rowHtml) out += row;
     out += "</table>\n</body></html>\n";
     return out;

@@ -87,6 +87,10 @@ TEST(GradeReport, TheHtmlEscapesWhatStudentsWrote) {
     EXPECT_NE(page.find("1 submissions of 3 (the rest still running) · compared at 2 settings: defaults · uA=1"),
               std::string::npos);
     EXPECT_NE(page.find("<span class=error>1 error</span>"), std::string::npos);
+    // The glance strip links to the row.
+    EXPECT_NE(page.find("<a class=error href=\"#s-&lt;script&gt;alert(1)&lt;/script&gt;\">&lt;script&gt;alert(1)&lt;/script&gt; 0</a>"),
+              std::string::npos);
+    EXPECT_NE(html.find("id=\"s-&lt;script&gt;alert(1)&lt;/script&gt;\""), std::string::npos);
 }
 
 }  // namespace
