@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# Grading throughput: a generated class of N submissions graded against the
+# solution in tests/data/grading/solution with `glimmer batch --reference`
+# (5 settings a submission, sandbox on, --jobs = cores), for several class
+# sizes. Prints submissions/second, the largest process's peak memory
+# (GNU time's maximum RSS: the parent or one worker, not their sum) and the
+# report's size. A class mixes what a teacher meets: right, almost right,
+# painted for one setting, blank, not compiling (one in six each... see mk()).
+# Usage: tools/bench-grade.sh [GLIMMER] [SIZES...] (default build/src/app/glimmer, 50 100 200 400).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+g="${1:-build/src/app/glimmer}"
+shift || true
+sizes=("$@")
+[ ${#sizes[@]} -gt 0 ] || sizes=(50 100 200 400)
+sol=tests/data/grading/solution
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+mk() {  # mk CLASS_DIR N
+  local cls=$1 n=$2 k d
+  for k in $(seq 1 "$n"); do
+    d="$cls/student$(printf %04d "$k")"
+    mkdir -p "$d"
+    cp "$sol/st.vert" "$sol/rings.glib" "$sol/rings.frag" "$d/"
+    case $((k % 6)) in
+      1) sed -i 's/(0.5 + 0.5 \* uTint)/(0.52 + 0.48 * uTint)/' "$d/rings.frag" ;;            # almost right
+      2) sed -i 's/6.2831853 \* uFreq/6.2831853 * 6.0/' "$d/rings.frag" ;;                     # painted for the defaults
+      3) sed -i 's/gl_FragColor = vec4(mix.*/gl_FragColor = vec4(0.0, 0.0, 0.0, 1.0);/' "$d/rings.frag" ;;  # blank
+      4) sed -i 's/float r = /float r = = /' "$d/rings.frag" ;;                                 # does not compile
+      *) ;;                                                                                     # right
+    esac
+  done
+}
+echo "grading on $(nproc) cores, llvmpipe (osmesa), 128x128, 5 settings a submission, --jobs $(nproc)"
+printf "%8s %9s %12s %12s %14s %10s\n" students seconds subs/s ms/sub "peak RSS MiB" "report MiB"
+for n in "${sizes[@]}"; do
+  cls="$work/class$n"
+  mk "$cls" "$n"
+  t0=$(date +%s.%N)
+  /usr/bin/time -f '%M' -o "$work/rss$n" "$g" -q batch "$cls" --reference "$sol/rings.glib" -o "$work/out$n" \
+    --size 128x128 --backend osmesa --jobs "$(nproc)" --timeout 30 2>/dev/null || true
+  t1=$(date +%s.%N)
+  graded=$(($(wc -l < "$work/out$n/grades.csv") - 1))
+  [ "$graded" -eq "$n" ] || { echo "only $graded of $n graded" >&2; exit 1; }
+  python3 - "$n" "$t0" "$t1" "$(tail -1 "$work/rss$n")" "$(stat -c %s "$work/out$n/report.html")" <<'PY'
+import sys
+n, t0, t1, rss, html = int(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3]), int(sys.argv[4]), int(sys.argv[5])
+s = t1 - t0
+print(f"{n:8d} {s:9.2f} {n/s:12.1f} {1000*s/n:12.1f} {rss/1024:14.1f} {html/2**20:10.2f}")
+PY
+  rm -rf "$cls" "$work/out$n"
+done
