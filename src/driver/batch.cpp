@@ -17,6 +17,7 @@
 #include <fmt/format.h>
 
 #include "backends/context.h"
+#include "driver/console.h"
 #include "driver/numeric_health.h"
 #include "driver/prepare_script.h"
 #include "image/image.h"
@@ -67,6 +68,10 @@ bool applyGradingAssignment(const Plan& plan, UniformValues& values, const std::
 // One script on a worker's context, as `glimmer render` draws it; a
 // grading job once per setting.
 BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* context, const std::string& contextError) {
+    // A grading job's diagnostics go into the teacher's report, which must
+    // not change with -q (that is about the terminal). This is a worker
+    // process: the parent's verbosity is untouched.
+    if (!job.outputs.empty() && verbosity() == Verbosity::Quiet) setVerbosity(Verbosity::Normal);
     BatchResult r;
     Diagnostics diags;
     LoadedScript loaded;
