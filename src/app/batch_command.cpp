@@ -34,11 +34,13 @@ bool parseShard(const std::string& text, int& shard, int& shards) {
 }  // namespace
 
 void addBatchCommand(CLI::App& app, BatchOptions& o) {
-    CLI::App* sub = app.add_subcommand("batch", "render many scripts to PNGs with workers that keep their GL context");
+    CLI::App* sub = app.add_subcommand("batch", "render many scripts to PNGs with workers that keep their GL context, or grade "
+                                                "a class against a solution (--reference)");
     sub->add_option("scripts", o.scripts, "the .glib scripts; with --reference, also submission folders, zips, "
                                           "or a class folder holding one folder or zip per student");
     sub->add_option("--list", o.list, "a file naming one script per line (blank lines and # comments skipped)");
-    sub->add_option("-o,--output", o.outputDir, "the folder for the PNGs (one per script, named after its path)")
+    sub->add_option("-o,--output", o.outputDir, "the folder for the PNGs (one per script, named after its path); grading: "
+                                                    "for report.html, grades.csv, grades.jsonl and the pictures")
         ->required();
     sub->add_option("--report", o.report, "write one JSON line per script (path, exit, output, diagnostics, ms, health)");
     sub->add_option("--jobs", o.jobs, "worker processes")->capture_default_str()->check(CLI::Range(1, 64));
@@ -81,6 +83,11 @@ int runBatch(const BatchOptions& o) {
         }
     }
     const bool grading = !o.reference.empty();
+    if (grading && (!o.report.empty() || o.strict)) {
+        std::cerr << "glimmer: error: batch --reference writes its own grades.jsonl and report.html in -o; --report "
+                     "and --strict are for plain batch\n";
+        return kExitUsage;
+    }
     if (!grading) {
         std::error_code ec;
         for (const auto& sc : scripts)

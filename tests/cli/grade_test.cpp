@@ -294,6 +294,15 @@ TEST(CliGrade, FoldersAreGradedOnlyAgainstASolution) {
     EXPECT_EQ(r.exitCode, 2);
     EXPECT_EQ(r.err, "glimmer: error: batch: " + (dir.path() / "class").string() +
                          " is a folder or zip: submissions are graded; give --reference SOLUTION.glib\n");
+    auto resume = runGlimmer({"batch", "x.glib", "--resume", "-o", dir.file("out")});
+    EXPECT_EQ(resume.exitCode, 2);
+    EXPECT_EQ(resume.err, "glimmer: error: batch: --vary, --no-sandbox and --resume are for grading; give --reference "
+                          "SOLUTION.glib\n");
+    auto strict = runGlimmer({"batch", (dir.path() / "class").string(), "--reference", (kSolution / "rings.glib").string(),
+                              "--strict", "-o", dir.file("out")});
+    EXPECT_EQ(strict.exitCode, 2);
+    EXPECT_EQ(strict.err, "glimmer: error: batch --reference writes its own grades.jsonl and report.html in -o; "
+                          "--report and --strict are for plain batch\n");
 }
 
 }  // namespace
