@@ -7,12 +7,14 @@
 # 0.1 s) and the report's size. A class mixes what a teacher meets: half
 # right, and a sixth each almost right, painted for one setting, blank and
 # not compiling (see mk()).
-# Usage: tools/bench-grade.sh [GLIMMER] [SIZES...] (default build/src/app/glimmer, 50 100 200 400).
+# Usage: [BACKEND=egl-device] tools/bench-grade.sh [GLIMMER] [SIZES...]
+# (default osmesa, build/src/app/glimmer, 50 100 200 400).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 g="${1:-build/src/app/glimmer}"
 shift || true
 sizes=("$@")
+backend="${BACKEND:-osmesa}"
 [ ${#sizes[@]} -gt 0 ] || sizes=(50 100 200 400)
 sol=tests/data/grading/solution
 work="$(mktemp -d)"
@@ -32,14 +34,14 @@ mk() {  # mk CLASS_DIR N
     esac
   done
 }
-echo "grading on $(nproc) cores, llvmpipe (osmesa), 128x128, 5 settings a submission, --jobs $(nproc)"
+echo "grading on $(nproc) cores, --backend $backend, 128x128, 5 settings a submission, --jobs $(nproc)"
 printf "%8s %9s %8s %8s %16s %16s %10s\n" students seconds subs/s ms/sub "peak RSS all MiB" "largest one MiB" "report MiB"
 for n in "${sizes[@]}"; do
   cls="$work/class$n"
   mk "$cls" "$n"
   t0=$(date +%s.%N)
   "$g" -q batch "$cls" --reference "$sol/rings.glib" -o "$work/out$n" \
-    --size 128x128 --backend osmesa --jobs "$(nproc)" --timeout 30 2>/dev/null &
+    --size 128x128 --backend "$backend" --jobs "$(nproc)" --timeout 30 2>/dev/null &
   pid=$!
   peak=0 largest=0
   while kill -0 "$pid" 2>/dev/null; do
