@@ -153,6 +153,24 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     for (size_t i = 0; i < subs.size(); ++i)
         if (inShard(i, shard, shards)) mine.push_back(stems[i]);
     header.expected = int(mine.size());
+    // Resuming is only sound when the earlier run graded the same way.
+    if (o.resume && fs::exists(out / "grading.txt")) {
+        std::string text, why;
+        ReportHeader before;
+        std::vector<std::string> beforeStudents;
+        if (!readRegularFile((out / "grading.txt").string(), 1 << 24, text, why) ||
+            !parseRunHeader(text, before, beforeStudents, why)) {
+            std::cerr << fmt::format("glimmer: error: --resume: {}: {}\n", (out / "grading.txt").string(), why);
+            return kExitUsage;
+        }
+        if (before.solution != header.solution || before.settings != header.settings ||
+            before.thresholds != header.thresholds || before.sandbox != header.sandbox) {
+            std::cerr << fmt::format("glimmer: error: --resume: {} was graded with another solution, settings, "
+                                     "thresholds or sandbox; grade it again without --resume, or into another -o\n",
+                                     o.outputDir);
+            return kExitUsage;
+        }
+    }
     writeWhole(out / "grading.txt", runHeaderText(header, stems));
 
     // What an earlier run of this folder already graded.

@@ -181,6 +181,14 @@ TEST(CliGrade, ResumeGradesOnlyWhatIsMissingAndEndsWithTheSameGrades) {
     EXPECT_EQ(countOf(resumed.err, "batch: 4/"), 0) << resumed.err;
     EXPECT_EQ(csvRows(out / "grades.csv"), before);
     EXPECT_EQ(countOf(readAll(out / "report.html"), "<tr class="), 5);
+    // Resuming with other settings would mix two gradings: refused.
+    auto other = gradeArgs(cls, out);
+    other.insert(other.end(), {"--resume", "--vary", "uFreq=3"});
+    auto mixed = runGlimmer(other, 120);
+    EXPECT_EQ(mixed.exitCode, 2);
+    EXPECT_EQ(mixed.err, "glimmer: error: --resume: " + out.string() +
+                             " was graded with another solution, settings, thresholds or sandbox; grade it again "
+                             "without --resume, or into another -o\n");
 }
 
 int lineCount(const fs::path& file) {
