@@ -243,6 +243,24 @@ TEST(CliGrade, AKilledRunResumedGradesTheRestAndEndsWithTheGradesOfOneRun) {
     EXPECT_EQ(lineCount(out / "grades.jsonl"), 8);
 }
 
+// A submission asking for more memory than --max-memory costs only itself.
+TEST(CliGrade, ASubmissionThatWouldExhaustMemoryCostsOnlyItself) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class";
+    const std::string frag = readAll(kSolution / "rings.frag");
+    student(cls / "hog", frag, replaced(readAll(kSolution / "rings.glib"), "Vertex st.vert",
+                                        "Texture2D 6 8192 8192 RGBA32F\nVertex st.vert"));
+    student(cls / "right", frag);
+    auto args = gradeArgs(cls, dir.path() / "out");
+    args.insert(args.end(), {"--max-memory", "64"});
+    auto r = runGlimmer(args, 120);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    auto rows = csvRows(dir.path() / "out" / "grades.csv");
+    EXPECT_EQ(rows["right"].substr(0, 9), "100,pass,");
+    EXPECT_EQ(rows["hog"].substr(0, rows["hog"].find(',', rows["hog"].find('|'))), "0,error,,|does not render");
+    EXPECT_NE(rows["hog"].find("more than the memory budget of 64 MiB (--max-memory)"), std::string::npos) << rows["hog"];
+}
+
 TEST(CliGrade, TheSandboxIsOnUnlessTurnedOffAndThenSaidOnce) {
     TempDir dir;
     const fs::path cls = dir.path() / "class";
