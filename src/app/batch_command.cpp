@@ -139,7 +139,7 @@ int runBatch(const BatchOptions& o) {
     std::vector<BatchJob> jobs;
     for (size_t i = 0; i < scripts.size(); ++i)
         if (inShard(i, shard, shards))
-            jobs.push_back({scripts[i], (std::filesystem::path(o.outputDir) / names[i]).string(), {}, {}});
+            jobs.push_back({scripts[i], (std::filesystem::path(o.outputDir) / names[i]).string(), {}, {}, {}});
     settings.sandbox = o.sandbox;
     Progress progress;
     auto results = runBatch(jobs, settings, [&](size_t done, size_t total) {

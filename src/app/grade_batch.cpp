@@ -202,7 +202,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     BatchSettings solutionSettings = base;
     solutionSettings.sandbox = false;  // the teacher's own files
     solutionSettings.jobs = 1;
-    BatchJob solutionJob{o.reference, "", settings, {}};
+    BatchJob solutionJob{o.reference, "", settings, {}, {}};
     for (size_t k = 0; k < settings.size(); ++k)
         solutionJob.outputs.push_back((pictures / fmt::format("solution-{}.png", k)).string());
     auto solved = runBatch({solutionJob}, solutionSettings, {});
@@ -259,7 +259,8 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
             keep(r);
             continue;
         }
-        BatchJob job{script, "", settings, {}};
+        // The submission's folder is readable too: the sandbox is the submission, not only the script's folder.
+        BatchJob job{script, "", settings, {}, {folder}};
         for (size_t k = 0; k < settings.size(); ++k)
             job.outputs.push_back((pictures / fmt::format("{}-{}.png", stems[i], k)).string());
         jobs.push_back(job);

@@ -85,6 +85,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
     ScriptRequest request;
     request.script = job.script;
     request.plan.includeDirs = s.includeDirs;
+    request.plan.includeDirs.insert(request.plan.includeDirs.end(), job.includeDirs.begin(), job.includeDirs.end());
     request.plan.width = s.width;
     request.plan.height = s.height;
     request.plan.sandbox = s.sandbox;

@@ -29,6 +29,10 @@ struct BatchJob {
     // skipped and reported in BatchResult::missing.
     std::vector<std::vector<std::string>> settings;
     std::vector<std::string> outputs;
+    // More folders this job may read, after BatchSettings::includeDirs
+    // (grading: the submission's own folder, so that under --sandbox a
+    // script three folders down still reaches its submission's other files).
+    std::vector<std::string> includeDirs;
 };
 
 struct BatchSettings {

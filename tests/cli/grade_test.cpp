@@ -267,9 +267,14 @@ TEST(CliGrade, TheSandboxIsOnUnlessTurnedOffAndThenSaidOnce) {
     std::ofstream(dir.path() / "outside.frag") << readAll(kSolution / "rings.frag");
     student(cls / "reacher", "", replaced(readAll(kSolution / "rings.glib"), "Fragment rings.frag", "Fragment ../../outside.frag"));
     student(cls / "plain", readAll(kSolution / "rings.frag"));
+    // The sandbox is the submission's folder: a script deeper inside may read the files above it there.
+    student(cls / "nested" / "hw3", "", replaced(readAll(kSolution / "rings.glib"), "Fragment rings.frag", "Fragment ../rings.frag"));
+    fs::rename(cls / "nested" / "hw3" / "rings.frag", cls / "nested" / "rings.frag");
+    std::ofstream(cls / "nested" / "rings.frag") << readAll(kSolution / "rings.frag");
     auto boxed = runGlimmer(gradeArgs(cls, dir.path() / "boxed"), 120);
     EXPECT_EQ(boxed.exitCode, 1) << boxed.err;
     auto rows = csvRows(dir.path() / "boxed" / "grades.csv");
+    EXPECT_EQ(rows["nested"].substr(0, 9), "100,pass,") << rows["nested"];
     EXPECT_EQ(rows["reacher"].substr(0, rows["reacher"].find(',', rows["reacher"].find('|'))), "0,error,,|reads files outside its folder");
     EXPECT_NE(rows["reacher"].find("is outside the sandbox"), std::string::npos) << rows["reacher"];
     auto args = gradeArgs(cls, dir.path() / "open");
