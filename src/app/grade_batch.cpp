@@ -298,6 +298,9 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                  r.ssim = comparisons[worst].ssim;
                  r.psnr = comparisons[worst].psnr;
                  r.worstSetting = settingLabel(settings[worst]);
+                 for (size_t k = 0; k < settings.size(); ++k)
+                     r.bySetting += fmt::format("{}{} {:.3f}", k ? " · " : "", settingLabel(settings[k]),
+                                                comparisons[k].ssim);
                  r.picture = fs::relative(result.written[worst], out, ec).string();
                  r.solution = fs::relative(solutionJob.outputs[worst], out, ec).string();
                  keep(r);

@@ -60,8 +60,9 @@ std::string reportRowHtml(const GradeRow& r, const RowPictures& p) {
     };
     std::string measures = r.verdict == "error"
                                ? std::string("&nbsp;")
-                               : fmt::format("SSIM {:.3f} · PSNR {}<br>worst at {}", r.ssim, htmlEscape(dB(r.psnr)),
-                                             htmlEscape(r.worstSetting));
+                               : fmt::format("SSIM {:.3f} · PSNR {}<br>worst at {}{}", r.ssim, htmlEscape(dB(r.psnr)),
+                                             htmlEscape(r.worstSetting),
+                                             r.bySetting.empty() ? "" : "<br>SSIM by setting: " + htmlEscape(r.bySetting));
     return fmt::format(
         "<tr class=\"{0}\" id=\"s-{1}\"><td class=who><b>{1}</b><br><span class=v>{0}</span> <span class=score>{2}</span><br>"
         "<small>{3:.2f} s</small></td>\n<td class=pics>{4}{5}{6}</td>\n<td class=why><small>{7}</small>"

@@ -92,10 +92,10 @@ std::string number(double v) {
 
 std::string gradeRecord(const GradeRow& r) {
     return fmt::format("{{\"student\": {}, \"submission\": {}, \"script\": {}, \"verdict\": {}, \"score\": {}, "
-                       "\"ssim\": {}, \"psnr\": {}, \"worst_setting\": {}, \"notes\": {}, \"diagnostics\": {}, "
+                       "\"ssim\": {}, \"psnr\": {}, \"worst_setting\": {}, \"by_setting\": {}, \"notes\": {}, \"diagnostics\": {}, "
                        "\"seconds\": {}, \"picture\": {}, \"solution\": {}}}",
                        quoted(r.student), quoted(r.submission), quoted(r.script), quoted(r.verdict), r.score,
-                       number(r.ssim), number(r.psnr), quoted(r.worstSetting), quoted(r.notes),
+                       number(r.ssim), number(r.psnr), quoted(r.worstSetting), quoted(r.bySetting), quoted(r.notes),
                        quoted(r.diagnostics), number(r.seconds), quoted(r.picture), quoted(r.solution));
 }
 
@@ -103,7 +103,7 @@ bool parseGradeRecord(const std::string& line, GradeRow& r, std::string& error) 
     std::map<std::string, std::string> f;
     if (!parseFlat(line, f, error)) return false;
     for (const char* key : {"student", "submission", "script", "verdict", "score", "ssim", "psnr", "worst_setting",
-                            "notes", "diagnostics", "seconds", "picture", "solution"})
+                            "by_setting", "notes", "diagnostics", "seconds", "picture", "solution"})
         if (!f.count(key)) return error = fmt::format("no \"{}\"", key), false;
     auto num = [](const std::string& s) {  // from_chars: no locale's decimal comma; reads inf and nan
         double v = 0;
@@ -118,6 +118,7 @@ bool parseGradeRecord(const std::string& line, GradeRow& r, std::string& error) 
     r.ssim = num(f["ssim"]);
     r.psnr = num(f["psnr"]);
     r.worstSetting = f["worst_setting"];
+    r.bySetting = f["by_setting"];
     r.notes = f["notes"];
     r.diagnostics = f["diagnostics"];
     r.seconds = num(f["seconds"]);

@@ -14,6 +14,7 @@ struct GradeRow {
     int score = 0;            // 0..100
     double ssim = 0, psnr = 0;  // at the worst setting
     std::string worstSetting;   // its label ("uX=1")
+    std::string bySetting;      // SSIM at each setting, in words ("defaults 1.000 · uX=1 0.412")
     std::string notes;          // the verdict's why
     std::string diagnostics;    // as printed: file:line:col: error: ..., the source line, a caret
     double seconds = 0;         // render time of every setting

@@ -154,6 +154,10 @@ TEST(CliGrade, EachKindOfSubmissionGetsItsVerdict) {
     EXPECT_LT(page.find("<b>painted</b>"), page.find("<b>shifted</b>"));
     EXPECT_LT(page.find("<b>shifted</b>"), page.find("<b>right</b>"));
     EXPECT_NE(page.find("    float r = = length(vST - vec2(0.5));"), std::string::npos);  // the source line
+    // Painted for the defaults: right there, wrong at the sliders' ends.
+    const size_t painted = page.find("<b>painted</b>");
+    const std::string paintedRow = page.substr(painted, page.find("</tr>", painted) - painted);
+    EXPECT_NE(paintedRow.find("SSIM by setting: defaults 1.000 · uFreq=2 0."), std::string::npos) << paintedRow;
 }
 
 TEST(CliGrade, ResumeGradesOnlyWhatIsMissingAndEndsWithTheSameGrades) {

@@ -52,6 +52,7 @@ TEST(GradeReport, RecordsReadBackExactly) {
     r.ssim = 0.912345;
     r.psnr = INFINITY;
     r.worstSetting = "uA=1";
+    r.bySetting = "defaults 1.000 · uA=1 0.912";
     r.notes = "lacks the solution's uniform uB";
     r.diagnostics = "x.glib:1:1: warning: tab\there\n  line\n";
     r.seconds = 1.25;
