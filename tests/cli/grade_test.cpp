@@ -265,6 +265,19 @@ TEST(CliGrade, ASubmissionThatWouldExhaustMemoryCostsOnlyItself) {
     EXPECT_NE(rows["hog"].find("more than the memory budget of 64 MiB (--max-memory)"), std::string::npos) << rows["hog"];
 }
 
+// The assignment's range is the solution's: a student's narrower slider is
+// still set to the solution's ends (with --set's rules it would be refused
+// and the picture drawn at the student's default instead).
+TEST(CliGrade, ASliderNarrowerThanTheSolutionsIsSetToTheSolutionsEnds) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class";
+    student(cls / "narrow", readAll(kSolution / "rings.frag"),
+            replaced(readAll(kSolution / "rings.glib"), "uTint <0. 0.5 1.>", "uTint <0.25 0.5 0.75>"));
+    auto r = runGlimmer(gradeArgs(cls, dir.path() / "out"), 120);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(csvRows(dir.path() / "out" / "grades.csv")["narrow"], "100,pass,1.0000,inf|,");
+}
+
 TEST(CliGrade, TheSandboxIsOnUnlessTurnedOffAndThenSaidOnce) {
     TempDir dir;
     const fs::path cls = dir.path() / "class";
