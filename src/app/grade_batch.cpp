@@ -211,6 +211,11 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         std::cerr << fmt::format("glimmer: error: --reference {}: the solution does not render\n", o.reference);
         return kExitUsage;
     }
+    if (!solved[0].missing.empty()) {  // a --vary name the solution does not have: every student would "lack" it
+        std::cerr << fmt::format("glimmer: error: --vary {}: the solution {} has no uniform of that name\n",
+                                 solved[0].missing[0], o.reference);
+        return kExitUsage;
+    }
     std::vector<Image> solutionPictures(settings.size());
     for (size_t k = 0; k < settings.size(); ++k) {
         std::string why;

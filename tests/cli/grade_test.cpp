@@ -276,6 +276,12 @@ TEST(CliGrade, ASliderNarrowerThanTheSolutionsIsSetToTheSolutionsEnds) {
     auto r = runGlimmer(gradeArgs(cls, dir.path() / "out"), 120);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(csvRows(dir.path() / "out" / "grades.csv")["narrow"], "100,pass,1.0000,inf|,");
+    auto args = gradeArgs(cls, dir.path() / "typo");
+    args.insert(args.end(), {"--vary", "uFrek=1,2"});
+    auto typo = runGlimmer(args, 120);
+    EXPECT_EQ(typo.exitCode, 2);
+    EXPECT_EQ(typo.err, "glimmer: error: --vary uFrek: the solution " + (kSolution / "rings.glib").string() +
+                            " has no uniform of that name\n");
 }
 
 TEST(CliGrade, TheSandboxIsOnUnlessTurnedOffAndThenSaidOnce) {
