@@ -114,7 +114,10 @@ bool parseGradeRecord(const std::string& line, GradeRow& r, std::string& error) 
     r.submission = f["submission"];
     r.script = f["script"];
     r.verdict = f["verdict"];
-    r.score = int(num(f["score"]));
+    const double score = num(f["score"]);
+    if (!(score >= 0 && score <= 100) || score != std::floor(score))  // NaN fails too; never cast out of range
+        return error = fmt::format("score '{}' is not a whole number from 0 to 100", f["score"]), false;
+    r.score = int(score);
     r.ssim = num(f["ssim"]);
     r.psnr = num(f["psnr"]);
     r.worstSetting = f["worst_setting"];

@@ -67,6 +67,10 @@ TEST(GradeReport, RecordsReadBackExactly) {
     EXPECT_TRUE(std::isinf(back.psnr));
     EXPECT_EQ(back.diagnostics, r.diagnostics);
     EXPECT_FALSE(parseGradeRecord(line.substr(0, line.size() / 2), back, error));
+    std::string huge = line;
+    huge.replace(huge.find("\"score\": 91"), 11, "\"score\": 1e300");
+    EXPECT_FALSE(parseGradeRecord(huge, back, error));
+    EXPECT_EQ(error, "score '1e300' is not a whole number from 0 to 100");
     EXPECT_FALSE(parseGradeRecord("{\"student\": \"x\"}", back, error));
     EXPECT_EQ(error, "no \"submission\"");
 }
