@@ -53,7 +53,8 @@ void zipFolder(const fs::path& zipPath, const std::map<std::string, std::string>
     int err = 0;
     zip_t* z = zip_open(zipPath.c_str(), ZIP_CREATE | ZIP_TRUNCATE, &err);
     ASSERT_NE(z, nullptr);
-    std::vector<std::string> keep;  // zip_source_buffer reads them at zip_close
+    std::vector<std::string> keep;  // zip_source_buffer reads them at zip_close: no reallocation may move them
+    keep.reserve(files.size());
     for (const auto& [name, data] : files) {
         keep.push_back(data);
         zip_file_add(z, name.c_str(), zip_source_buffer(z, keep.back().data(), keep.back().size(), 0), 0);
