@@ -113,6 +113,10 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     std::vector<std::string> errors;
     std::vector<Submission> subs = listSubmissions(inputs, errors);
     for (const auto& e : errors) std::cerr << e << "\n";
+    {  // -o inside the class folder is not a student
+        std::error_code ec;
+        std::erase_if(subs, [&](const Submission& sub) { return fs::equivalent(sub.path, o.outputDir, ec); });
+    }
     if (subs.empty()) {
         std::cerr << "glimmer: error: batch: no submissions to grade\n";
         return kExitUsage;
