@@ -3,8 +3,7 @@
 // workers at every setting (driver/batch.h), compared here as each result
 // arrives, and written at once: a record line (what --resume and
 // batch-merge read back), then the page and the CSV, rewritten at most
-// every two seconds and at the end, each through a temporary file and a
-// rename so a killed run always leaves a whole report.
+// every two seconds and at the end (app/grade_report_files.cpp).
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -24,61 +23,19 @@
 #include "grade/grading.h"
 #include "grade/safe_unzip.h"
 #include "grade/submissions.h"
-#include "image/png_stream.h"
 #include "plan/limits.h"
 #include "util/read_file.h"
 
 namespace glimmer {
 namespace fs = std::filesystem;
 
-bool writeWhole(const fs::path& path, const std::string& text) {
-    const fs::path tmp = path.string() + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << text;
-        if (!out) return false;
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    return !ec;
-}
-
-std::string dataUrl(const Image& picture) {
-    return picture.empty() ? "" : "data:image/png;base64," + base64(encodePng(thumbnail(picture, 96), 6));
-}
-
-RowPictures rowPictures(const GradeRow& row, const fs::path& dir) {
-    RowPictures p;
-    Image student, solution;
-    std::string why;
-    const bool haveStudent = !row.picture.empty() && loadImage((dir / row.picture).string(), student, why);
-    const bool haveSolution = !row.solution.empty() && loadImage((dir / row.solution).string(), solution, why);
-    if (haveStudent) p.student = dataUrl(student);
-    if (haveSolution) p.solution = dataUrl(solution);
-    if (haveStudent && haveSolution) p.difference = dataUrl(differencePicture(student, solution));
-    return p;
-}
+namespace {
 
 std::string thresholdsText(const Thresholds& t) {
     return fmt::format("pass: SSIM ≥ {:g} and PSNR ≥ {:g} dB at every setting; look: SSIM ≥ {:g} at the worst; "
                        "score: 100 × the worst SSIM",
                        t.passSsim, t.passPsnr, t.lookSsim);
 }
-
-void writeReport(const fs::path& dir, const ReportHeader& header, std::vector<GradeRow> rows,
-                 std::map<std::string, std::string>& rowHtml, const fs::path& picturesDir) {
-    sortForReview(rows);
-    std::vector<std::string> html;
-    for (const auto& r : rows) {
-        auto it = rowHtml.find(r.student);
-        if (it == rowHtml.end()) it = rowHtml.emplace(r.student, reportRowHtml(r, rowPictures(r, picturesDir))).first;
-        html.push_back(it->second);
-    }
-    writeWhole(dir / "report.html", reportHtml(header, rows, html));
-    writeWhole(dir / "grades.csv", gradesCsv(rows));
-}
-
-namespace {
 
 std::vector<Slider> slidersOf(const Plan& plan) {
     std::vector<Slider> out;
