@@ -13,11 +13,11 @@ if [ -z "$cxx" ] || [ -z "$cc" ]; then
   exit 0
 fi
 CC="$cc" CXX="$cxx" cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLIMMER_FUZZ=ON -DGLIMMER_TESTS=OFF >/dev/null
-targets=(fuzz_script fuzz_image_bmp fuzz_image_pngjpeg fuzz_image_hdr fuzz_image_tex)
+targets=(fuzz_script fuzz_image_bmp fuzz_image_pngjpeg fuzz_image_hdr fuzz_image_tex fuzz_grade_record)
 cmake --build build-fuzz -j2 --target "${targets[@]}"
 
 corpus=build-fuzz/corpus
-rm -rf "$corpus" && mkdir -p "$corpus"/{script,bmp,pngjpeg,hdr,tex}
+rm -rf "$corpus" && mkdir -p "$corpus"/{script,bmp,pngjpeg,hdr,tex,grade_record}
 n=0  # files of the same name in different folders are all kept
 for f in $(find scripts tests/data textures -type f); do
   n=$((n + 1)); base="$n-$(basename "$f")"
@@ -38,9 +38,15 @@ png = b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", struct.pack(">IIBBBBB", 2, 2, 8, 6, 
       chunk(b"IDAT", zlib.compress(raw)) + chunk(b"IEND", b"")
 open(sys.argv[1], "wb").write(png)
 PY
+# A grading folder's record and header (src/grade/grade_row.h, grade_merge.h).
+cat > "$corpus/grade_record/seed.jsonl" <<'REC'
+{"student": "ann", "submission": "class/ann", "script": "class/ann/a.glib", "verdict": "look", "score": 91, "ssim": 0.914, "psnr": "inf", "worst_setting": "uX=1", "by_setting": "defaults 1.000 \u00b7 uX=1 0.914", "notes": "a\tb", "diagnostics": "a.glib:1:1: error: x\n  Ortho\n  ^\n", "seconds": 0.25, "picture": "pictures/ann-1.png", "solution": "pictures/solution-1.png"}
+REC
+printf 'solution: s.glib\nsetting: defaults\nsetting: uX=1\nthresholds: t\nsandbox: on\nstudent: ann\n' > "$corpus/grade_record/seed.txt"
 # Suppress nothing of Glimmer's own: these targets touch no GL driver.
 for t in "${targets[@]}"; do
   dir="$corpus/${t#fuzz_image_}"; [ "$t" = fuzz_script ] && dir="$corpus/script"
+  [ "$t" = fuzz_grade_record ] && dir="$corpus/grade_record"
   mkdir -p "build-fuzz/findings/$t"
   echo "fuzz-ci: $t for ${secs}s ($(ls "$dir" | wc -l) seeds)"
   log="build-fuzz/findings/$t/log"

@@ -15,6 +15,7 @@ packages=(
   libegl-mesa0 libgl1-mesa-dri        # Mesa's EGL vendor and llvmpipe, for EGL surfaceless on a CPU
   libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev libtinyexr-dev libpng-dev
   libwebp-dev                         # render --frames: animated WebP (WebPAnimEncoder/Decoder)
+  libzip-dev                          # batch --reference: students' zips, unpacked safely (src/grade/safe_unzip.h)
   fonts-dejavu-core                   # labels of sheets and charts (DejaVu Sans through stb_truetype)
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   glslang-dev glslang-tools           # the translation for WebGL 2: desktop GLSL -> SPIR-V (src/shader/web_translate.h)

@@ -10,6 +10,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "app/grade_batch.h"
 #include "driver/batch.h"
 #include "driver/console.h"
 #include "driver/options.h"
@@ -33,10 +34,13 @@ bool parseShard(const std::string& text, int& shard, int& shards) {
 }  // namespace
 
 void addBatchCommand(CLI::App& app, BatchOptions& o) {
-    CLI::App* sub = app.add_subcommand("batch", "render many scripts to PNGs with workers that keep their GL context");
-    sub->add_option("scripts", o.scripts, "the .glib scripts");
+    CLI::App* sub = app.add_subcommand("batch", "render many scripts to PNGs with workers that keep their GL context, or grade "
+                                                "a class against a solution (--reference)");
+    sub->add_option("scripts", o.scripts, "the .glib scripts; with --reference, also submission folders, zips, "
+                                          "or a class folder holding one folder or zip per student");
     sub->add_option("--list", o.list, "a file naming one script per line (blank lines and # comments skipped)");
-    sub->add_option("-o,--output", o.outputDir, "the folder for the PNGs (one per script, named after its path)")
+    sub->add_option("-o,--output", o.outputDir, "the folder for the PNGs (one per script, named after its path); grading: "
+                                                    "for report.html, grades.csv, grades.jsonl and the pictures")
         ->required();
     sub->add_option("--report", o.report, "write one JSON line per script (path, exit, output, diagnostics, ms, health)");
     sub->add_option("--jobs", o.jobs, "worker processes")->capture_default_str()->check(CLI::Range(1, 64));
@@ -48,6 +52,20 @@ void addBatchCommand(CLI::App& app, BatchOptions& o) {
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
     sub->add_flag("--strict", o.strict, "a target holding NaN, Inf, negatives or values above 65504 fails the script");
     addSafetyOptions(sub, o);
+    sub->add_option("--reference", o.reference, "SOLUTION.glib: grade each submission against it, at several slider "
+                                                "settings; writes report.html, grades.csv and grades.jsonl in -o");
+    sub->add_option("--vary", o.vary, "NAME=V1,V2,...: the settings compared (default: each slider of the solution "
+                                      "at its min and max)");
+    sub->add_flag("--no-sandbox", o.noSandbox, "grading: let submissions read files outside their folders "
+                                               "(grading sandboxes by default)");
+    sub->add_flag("--resume", o.resume, "grading: keep what -o already holds and grade only what is missing");
+    sub->add_option("--pass-ssim", o.passSsim, "grading: SSIM a pass needs at every setting")
+        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    sub->add_option("--pass-psnr", o.passPsnr, "grading: PSNR (dB) a pass needs at every setting")
+        ->capture_default_str()->check(CLI::Range(0.0, 200.0));
+    sub->add_option("--look-ssim", o.lookSsim, "grading: SSIM at the worst setting below which a submission is "
+                                               "wrong rather than worth a look")
+        ->capture_default_str()->check(CLI::Range(0.0, 1.0));
 }
 
 int runBatch(const BatchOptions& o) {
@@ -62,6 +80,26 @@ int runBatch(const BatchOptions& o) {
         for (std::string line; std::getline(in, line);) {
             while (!line.empty() && (line.back() == '\r' || line.back() == ' ')) line.pop_back();
             if (!line.empty() && line[0] != '#') scripts.push_back(line);
+        }
+    }
+    const bool grading = !o.reference.empty();
+    if (grading && (!o.report.empty() || o.strict)) {
+        std::cerr << "glimmer: error: batch --reference writes its own grades.jsonl and report.html in -o; --report "
+                     "and --strict are for plain batch\n";
+        return kExitUsage;
+    }
+    if (!grading) {
+        std::error_code ec;
+        for (const auto& sc : scripts)
+            if (std::filesystem::is_directory(sc, ec) || (sc.size() > 4 && sc.compare(sc.size() - 4, 4, ".zip") == 0)) {
+                std::cerr << fmt::format("glimmer: error: batch: {} is a folder or zip: submissions are graded; "
+                                         "give --reference SOLUTION.glib\n", sc);
+                return kExitUsage;
+            }
+        if (!o.vary.empty() || o.noSandbox || o.resume) {
+            std::cerr << "glimmer: error: batch: --vary, --no-sandbox and --resume are for grading; give --reference "
+                         "SOLUTION.glib\n";
+            return kExitUsage;
         }
     }
     if (scripts.empty()) {
@@ -84,18 +122,25 @@ int runBatch(const BatchOptions& o) {
         std::cerr << fmt::format("glimmer: error: -o {}: cannot make this folder\n", o.outputDir);
         return kExitUsage;
     }
-    std::vector<std::string> names = batchOutputNames(scripts);  // from the whole list: the same on every shard
-    std::vector<BatchJob> jobs;
-    for (size_t i = 0; i < scripts.size(); ++i)
-        if (inShard(i, shard, shards))
-            jobs.push_back({scripts[i], (std::filesystem::path(o.outputDir) / names[i]).string()});
     settings.backend = o.backend;
     settings.includeDirs = o.includeDirs;
-    settings.sandbox = o.sandbox;
     settings.maxMemoryMiB = o.maxMemoryMiB;
     settings.timeoutSeconds = o.timeoutSeconds;
     settings.strict = o.strict;
     settings.jobs = o.jobs;
+    if (grading) {
+        // Untrusted work: sandboxed unless the teacher says otherwise, and then said once.
+        settings.sandbox = !o.noSandbox;
+        if (o.noSandbox)
+            std::cerr << "glimmer: warning: --no-sandbox: submissions may read any file this user can read\n";
+        return runGradeBatch(o, scripts, shard, shards, settings);
+    }
+    std::vector<std::string> names = batchOutputNames(scripts);  // from the whole list: the same on every shard
+    std::vector<BatchJob> jobs;
+    for (size_t i = 0; i < scripts.size(); ++i)
+        if (inShard(i, shard, shards))
+            jobs.push_back({scripts[i], (std::filesystem::path(o.outputDir) / names[i]).string(), {}, {}, {}});
+    settings.sandbox = o.sandbox;
     Progress progress;
     auto results = runBatch(jobs, settings, [&](size_t done, size_t total) {
         progress.update(fmt::format("batch: {}/{} scripts", done, total));

@@ -24,6 +24,8 @@ void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
 void addBatchCommand(CLI::App& app, BatchOptions& options);
 int runBatch(const BatchOptions& options);
+void addBatchMergeCommand(CLI::App& app, BatchMergeOptions& options);
+int runBatchMerge(const BatchMergeOptions& options);
 int runCheck(const CheckOptions& options);
 
 // --sandbox and --max-memory (app/safety_options.cpp).

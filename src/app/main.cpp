@@ -29,12 +29,14 @@ int run(int argc, char** argv) {
     SheetOptions sheet;
     TradeoffOptions tradeoff;
     BatchOptions batch;
+    BatchMergeOptions batchMerge;
     addRenderCommand(app, render);
     addCheckCommand(app, check);
     addViewCommand(app, view);
     addSheetCommand(app, sheet);
     addTradeoffCommand(app, tradeoff);
     addBatchCommand(app, batch);
+    addBatchMergeCommand(app, batchMerge);
     // `glimmer script.glib` is `glimmer view script.glib`, as glslViewer.
     std::vector<char*> args(argv, argv + argc);
     std::string viewWord = "view";
@@ -46,9 +48,9 @@ int run(int argc, char** argv) {
     // CLI11 reports a mistyped command as "A subcommand is required"; name it.
     std::string first = args.size() > 1 ? args[1] : "";
     if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view" &&
-        first != "sheet" && first != "tradeoff" && first != "batch") {
+        first != "sheet" && first != "tradeoff" && first != "batch" && first != "batch-merge") {
         std::cerr << "glimmer: error: unknown command '" << first
-                  << "'; the commands are 'render', 'check', 'view', 'sheet', 'tradeoff' and 'batch'\n"
+                  << "'; the commands are 'render', 'check', 'view', 'sheet', 'tradeoff', 'batch' and 'batch-merge'\n"
                   << "Run with --help for more information.\n";
         return kExitUsage;
     }
@@ -68,6 +70,7 @@ int run(int argc, char** argv) {
         return runWithTimeout(sheet.timeoutSeconds, sheet.script, [&] { return runSheet(sheet); });
     if (app.got_subcommand("tradeoff")) return runTradeoff(tradeoff);
     if (app.got_subcommand("batch")) return runBatch(batch);
+    if (app.got_subcommand("batch-merge")) return runBatchMerge(batchMerge);
     return kExitUsage;
 }
 

@@ -5,7 +5,9 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cstring>
 #include <cstdio>
 #include <map>
 #include <memory>
@@ -15,10 +17,12 @@
 #include <fmt/format.h>
 
 #include "backends/context.h"
+#include "driver/console.h"
 #include "driver/numeric_health.h"
 #include "driver/prepare_script.h"
 #include "image/image.h"
 #include "plan/uniform_values.h"
+#include "util/numbers.h"
 
 namespace glimmer {
 namespace {
@@ -35,20 +39,53 @@ std::string resultJson(const BatchJob& job, int exitCode, const std::string& dia
                        jsonString(diagnostics), prepareMs, renderMs, writeMs, jsonString(health));
 }
 
-// One script on a worker's context, as `glimmer render` draws it.
+// Sets one "name=value" of a grading setting. A range takes the value even
+// outside the script's own range (the assignment's range is the
+// solution's); anything else goes through --set's rules. False when no
+// uniform has that name.
+bool applyGradingAssignment(const Plan& plan, UniformValues& values, const std::string& assignment, Diagnostics& diags) {
+    const std::string name = assignment.substr(0, assignment.find('='));
+    bool found = false, plain = true;
+    for (const auto& program : plan.programs)
+        for (const auto& u : program.uniforms)
+            if (u.name == name) found = true, plain = plain && u.form == UniformSetting::Form::Range;
+    if (!found) return false;
+    if (plain) {
+        double v = 0;
+        const std::string text = assignment.substr(name.size() + 1);
+        auto [end, ec] = parseDouble(text.data(), text.data() + text.size(), v);
+        if (ec == std::errc() && end == text.data() + text.size()) {
+            for (size_t p = 0; p < plan.programs.size(); ++p)
+                for (const auto& u : plan.programs[p].uniforms)
+                    if (u.name == name) values.set(int(p), name, {v});
+            return true;
+        }
+    }
+    values.applySet(plan, assignment, diags, "--vary");
+    return true;
+}
+
+// One script on a worker's context, as `glimmer render` draws it; a
+// grading job once per setting.
 BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* context, const std::string& contextError) {
+    // A grading job's diagnostics go into the teacher's report, which must
+    // not change with -q (that is about the terminal). This is a worker
+    // process: the parent's verbosity is untouched.
+    if (!job.outputs.empty() && verbosity() == Verbosity::Quiet) setVerbosity(Verbosity::Normal);
     BatchResult r;
     Diagnostics diags;
     LoadedScript loaded;
     std::ostringstream printed;
     if (!context) {
         r.exitCode = 1;
-        r.json = resultJson(job, 1, "glimmer: error: " + contextError + "\n", "", 0, 0, 0, "unchecked");
+        r.diagnostics = "glimmer: error: " + contextError + "\n";
+        r.json = resultJson(job, 1, r.diagnostics, "", 0, 0, 0, "unchecked");
         return r;
     }
     ScriptRequest request;
     request.script = job.script;
     request.plan.includeDirs = s.includeDirs;
+    request.plan.includeDirs.insert(request.plan.includeDirs.end(), job.includeDirs.begin(), job.includeDirs.end());
     request.plan.width = s.width;
     request.plan.height = s.height;
     request.plan.sandbox = s.sandbox;
@@ -59,7 +96,32 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
     printDiagnostics(diags, loaded.sources, printed);
     if (!renderer) {
         r.exitCode = 1;
-        r.json = resultJson(job, 1, printed.str(), "", prepareMs, 0, 0, "unchecked");
+        r.diagnostics = printed.str();
+        r.ms = prepareMs;
+        r.json = resultJson(job, 1, r.diagnostics, "", prepareMs, 0, 0, "unchecked");
+        return r;
+    }
+    if (!job.outputs.empty()) {  // grading: every setting on this one renderer
+        auto t1 = Clock::now();
+        Diagnostics setDiags;
+        for (size_t k = 0; k < job.settings.size() && k < job.outputs.size(); ++k) {
+            UniformValues values(loaded.plan);
+            for (const auto& a : job.settings[k])
+                if (!applyGradingAssignment(loaded.plan, values, a, setDiags)) {
+                    const std::string name = a.substr(0, a.find('='));
+                    if (std::find(r.missing.begin(), r.missing.end(), name) == r.missing.end()) r.missing.push_back(name);
+                }
+            renderer->render(values, 0);
+            std::string why;
+            if (writePng(job.outputs[k], renderer->readScreen(), why)) r.written.push_back(job.outputs[k]);
+            else printed << "glimmer: error: " << why << "\n";
+        }
+        printDiagnostics(setDiags, loaded.sources, printed);
+        r.exitCode = r.written.size() == job.outputs.size() ? 0 : 1;
+        r.diagnostics = printed.str();
+        r.ms = prepareMs + msSince(t1);
+        r.json = resultJson(job, r.exitCode, r.diagnostics, r.written.empty() ? "" : r.written[0], prepareMs,
+                            msSince(t1), 0, "unchecked");
         return r;
     }
     auto t1 = Clock::now();
@@ -78,8 +140,56 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
     bool wrote = health != "bad" && writePng(job.output, screen, why);
     if (health != "bad" && !wrote) printed << "glimmer: error: " << why << "\n";
     r.exitCode = wrote ? 0 : 1;
-    r.json = resultJson(job, r.exitCode, printed.str(), wrote ? job.output : "", prepareMs, renderMs, msSince(t2), health);
+    r.diagnostics = printed.str();
+    if (wrote) r.written.push_back(job.output);
+    r.ms = prepareMs + renderMs + msSince(t2);
+    r.json = resultJson(job, r.exitCode, r.diagnostics, wrote ? job.output : "", prepareMs, renderMs, msSince(t2), health);
     return r;
+}
+
+// A result as bytes for the pipe back to the parent: the four texts, each
+// length-prefixed (lists joined by newlines), then the milliseconds.
+std::string encodeResult(const BatchResult& r) {
+    auto join = [](const std::vector<std::string>& v) {
+        std::string out;
+        for (const auto& x : v) out += (out.empty() ? "" : "\n") + x;
+        return out;
+    };
+    std::string out;
+    for (const std::string& text : {r.json, r.diagnostics, join(r.written), join(r.missing)}) {
+        std::uint32_t n = std::uint32_t(text.size());
+        out.append(reinterpret_cast<const char*>(&n), sizeof n);
+        out += text;
+    }
+    out.append(reinterpret_cast<const char*>(&r.ms), sizeof r.ms);
+    return out;
+}
+
+bool decodeResult(const std::string& bytes, BatchResult& r) {
+    size_t at = 0;
+    auto text = [&](std::string& t) {
+        std::uint32_t n = 0;
+        if (at + sizeof n > bytes.size()) return false;
+        std::memcpy(&n, bytes.data() + at, sizeof n);
+        at += sizeof n;
+        if (n > bytes.size() - at) return false;
+        t = bytes.substr(at, n);
+        at += n;
+        return true;
+    };
+    auto split = [](const std::string& t) {
+        std::vector<std::string> out;
+        std::istringstream in(t);
+        for (std::string l; std::getline(in, l);) out.push_back(l);
+        return out;
+    };
+    std::string written, missing;
+    if (!text(r.json) || !text(r.diagnostics) || !text(written) || !text(missing) || at + sizeof r.ms != bytes.size())
+        return false;
+    std::memcpy(&r.ms, bytes.data() + at, sizeof r.ms);
+    r.written = split(written);
+    r.missing = split(missing);
+    return true;
 }
 
 bool writeAll(int fd, const void* data, size_t n) {
@@ -122,12 +232,14 @@ bool readAll(int fd, void* data, size_t n) {
             r = renderOne(jobs[index], s, context.get(), contextError);
         } catch (const std::exception& e) {
             r.exitCode = 1;
-            r.json = resultJson(jobs[index], 1, std::string("glimmer: error: ") + e.what() + "\n", "", 0, 0, 0, "unchecked");
+            r.diagnostics = std::string("glimmer: error: ") + e.what() + "\n";
+            r.json = resultJson(jobs[index], 1, r.diagnostics, "", 0, 0, 0, "unchecked");
         }
         std::int32_t code = r.exitCode;
-        std::uint32_t length = std::uint32_t(r.json.size());
+        const std::string payload = encodeResult(r);
+        std::uint32_t length = std::uint32_t(payload.size());
         if (!writeAll(resultsFd, &index, sizeof index) || !writeAll(resultsFd, &code, sizeof code) ||
-            !writeAll(resultsFd, &length, sizeof length) || !writeAll(resultsFd, r.json.data(), r.json.size()))
+            !writeAll(resultsFd, &length, sizeof length) || !writeAll(resultsFd, payload.data(), payload.size()))
             break;
     }
     std::fflush(nullptr);
@@ -231,7 +343,8 @@ std::string jsonString(const std::string& text) {
 }
 
 std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const BatchSettings& s,
-                                  const std::function<void(size_t, size_t)>& progress) {
+                                  const std::function<void(size_t, size_t)>& progress,
+                                  const std::function<void(size_t, const BatchResult&)>& onResult) {
     std::vector<BatchResult> results(jobs.size());
     std::vector<bool> done(jobs.size(), false);
     size_t next = 0, finished = 0;
@@ -239,9 +352,13 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
     std::vector<Worker> workers(size_t(std::max(1, std::min<int>(s.jobs, int(jobs.size())))));
     auto fail = [&](long job, const std::string& why) {
         const BatchJob& j = jobs[size_t(job)];
-        results[size_t(job)] = {1, resultJson(j, 1, why, "", 0, 0, 0, "unchecked")};
+        BatchResult& r = results[size_t(job)];
+        r.exitCode = 1;
+        r.json = resultJson(j, 1, why, "", 0, 0, 0, "unchecked");
+        r.diagnostics = why;
         done[size_t(job)] = true;
         ++finished;
+        if (onResult) onResult(size_t(job), r);
         if (progress) progress(finished, jobs.size());
     };
     auto assign = [&](Worker& w) {
@@ -270,17 +387,21 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
             if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
                 std::uint32_t index = 0, length = 0;
                 std::int32_t code = 0;
-                std::string json;
+                std::string payload;
+                BatchResult got;
                 bool ok = readAll(w.fromWorker, &index, sizeof index) && readAll(w.fromWorker, &code, sizeof code) &&
                           readAll(w.fromWorker, &length, sizeof length) && length < (64u << 20);
                 if (ok) {
-                    json.resize(length);
-                    ok = readAll(w.fromWorker, json.data(), length) && long(index) == w.job;
+                    payload.resize(length);
+                    ok = readAll(w.fromWorker, payload.data(), length) && long(index) == w.job &&
+                         decodeResult(payload, got);
                 }
                 if (ok) {
-                    results[index] = {code, json};
+                    got.exitCode = code;
+                    results[index] = std::move(got);
                     done[index] = true;
                     ++finished;
+                    if (onResult) onResult(index, results[index]);
                     if (progress) progress(finished, jobs.size());
                     w.job = -1;
                     if (next < jobs.size()) assign(w);

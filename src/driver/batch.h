@@ -21,6 +21,18 @@ namespace glimmer {
 struct BatchJob {
     std::string script;  // the .glib file
     std::string output;  // the PNG to write
+    // Grading (app/grade_batch.cpp): the script drawn once per setting
+    // ("name=value" assignments; empty: the script's own values) into
+    // outputs[k], on the one renderer, instead of once into `output`. A
+    // range is set even outside the script's own range (the assignment's
+    // range is the solution's); a name no uniform of the script has is
+    // skipped and reported in BatchResult::missing.
+    std::vector<std::vector<std::string>> settings;
+    std::vector<std::string> outputs;
+    // More folders this job may read, after BatchSettings::includeDirs
+    // (grading: the submission's own folder, so that under --sandbox a
+    // script three folders down still reaches its submission's other files).
+    std::vector<std::string> includeDirs;
 };
 
 struct BatchSettings {
@@ -37,11 +49,19 @@ struct BatchSettings {
 struct BatchResult {
     int exitCode = 0;              // as `glimmer render` would exit
     std::string json;              // one JSON object: script, exit, output, diagnostics, ms, health
+    // The same, as values, for grading:
+    std::string diagnostics;            // as printed (file:line:col: ..., the source line, a caret)
+    std::vector<std::string> written;   // the PNGs written (outputs of a grading job, in order)
+    std::vector<std::string> missing;   // uniforms a setting names that the script lacks
+    double ms = 0;                      // prepare, render and write together
 };
 
-// Renders every job; `progress(done, total)` after each. Never throws.
+// Renders every job; `progress(done, total)` after each, and
+// `onResult(index, result)` as each result arrives (in the order they
+// finish, so a caller can save it at once). Never throws.
 std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const BatchSettings& settings,
-                                  const std::function<void(size_t, size_t)>& progress);
+                                  const std::function<void(size_t, size_t)>& progress,
+                                  const std::function<void(size_t, const BatchResult&)>& onResult = {});
 
 // Whether position `index` of the list belongs to shard `shard` (1-based) of `shards`.
 bool inShard(size_t index, int shard, int shards);

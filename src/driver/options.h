@@ -55,6 +55,18 @@ struct BatchOptions : CommonOptions {
     std::string shard;      // I/N
     int jobs = 2;
     bool strict = false;
+    // Grading (folders and zips, one per student; app/grade_batch.cpp):
+    std::string reference;          // --reference: the teacher's solution
+    std::vector<std::string> vary;  // NAME=V1,V2,...: the settings compared (default: the solution's sliders)
+    bool noSandbox = false;         // --no-sandbox: grading sandboxes by default
+    bool resume = false;            // --resume: keep what -o already holds, grade only the rest
+    double passSsim = 0.95, passPsnr = 30, lookSsim = 0.70;
+};
+
+// glimmer batch-merge: the shards of a grading job array joined into one report.
+struct BatchMergeOptions {
+    std::vector<std::string> shards;  // the shards' -o folders
+    std::string outputDir;
 };
 
 struct TradeoffOptions {

@@ -1,0 +1,284 @@
+// glimmer batch --reference: a class graded against the teacher's solution.
+// The submissions are found and unpacked (grade/), drawn by the batch
+// workers at every setting (driver/batch.h), compared here as each result
+// arrives, and written at once: a record line (what --resume and
+// batch-merge read back), then the page and the CSV, rewritten at most
+// every two seconds and at the end (app/grade_report_files.cpp).
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "app/grade_batch.h"
+#include "driver/batch.h"
+#include "driver/console.h"
+#include "driver/load_script.h"
+#include "grade/grade_merge.h"
+#include "grade/grade_report.h"
+#include "grade/grading.h"
+#include "grade/safe_unzip.h"
+#include "grade/submissions.h"
+#include "plan/limits.h"
+#include "util/read_file.h"
+
+namespace glimmer {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string thresholdsText(const Thresholds& t) {
+    return fmt::format("pass: SSIM ≥ {:g} and PSNR ≥ {:g} dB at every setting; look: SSIM ≥ {:g} at the worst; "
+                       "score: 100 × the worst SSIM",
+                       t.passSsim, t.passPsnr, t.lookSsim);
+}
+
+std::vector<Slider> slidersOf(const Plan& plan) {
+    std::vector<Slider> out;
+    std::set<std::string> seen;
+    for (const auto& program : plan.programs)
+        for (const auto& u : program.uniforms)
+            if (u.form == UniformSetting::Form::Range && !u.values.empty() && seen.insert(u.name).second)
+                out.push_back({u.name, u.min, u.values[0], u.max});
+    return out;
+}
+
+std::string failureNote(const std::string& diagnostics) {
+    if (diagnostics.find("stopped after") != std::string::npos) return "timed out";
+    if (diagnostics.find("crashed") != std::string::npos) return "the renderer crashed";
+    if (diagnostics.find("sandbox") != std::string::npos) return "reads files outside its folder";
+    return "does not render";
+}
+
+// Unique file stems for the students' pictures ("alice", "alice-2", ...).
+std::vector<std::string> pictureStems(const std::vector<Submission>& subs) {
+    std::vector<std::string> names;
+    for (const auto& s : subs) names.push_back(s.name + ".glib");
+    auto out = batchOutputNames(names);
+    for (auto& n : out) n.resize(n.size() - 4);
+    return out;
+}
+
+}  // namespace
+
+int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs, int shard, int shards,
+                  const BatchSettings& base) {
+    std::vector<std::string> errors;
+    std::vector<Submission> subs = listSubmissions(inputs, errors);
+    for (const auto& e : errors) std::cerr << e << "\n";
+    {  // -o inside the class folder is not a student
+        std::error_code ec;
+        std::erase_if(subs, [&](const Submission& sub) { return fs::equivalent(sub.path, o.outputDir, ec); });
+    }
+    if (subs.empty()) {
+        std::cerr << "glimmer: error: batch: no submissions to grade\n";
+        return kExitUsage;
+    }
+    // The solution, planned without GL: its sliders are the settings compared.
+    Diagnostics diags;
+    LoadedScript solution;
+    PlanOptions planOptions;
+    planOptions.includeDirs = o.includeDirs;
+    if (!loadScript(o.reference, planOptions, diags, solution) || diags.errorCount() > 0) {
+        printDiagnostics(diags, solution.sources, std::cerr);
+        std::cerr << fmt::format("glimmer: error: --reference {}: the solution has errors\n", o.reference);
+        return kExitUsage;
+    }
+    std::vector<Setting> settings;
+    if (!o.vary.empty()) {
+        std::string why;
+        if (!settingsFromVary(o.vary, settings, why)) {
+            std::cerr << "glimmer: error: " << why << "\n";
+            return kExitUsage;
+        }
+    } else {
+        settings = settingsFromSliders(slidersOf(solution.plan));
+    }
+    Thresholds thresholds{o.passSsim, o.passPsnr, o.lookSsim};
+    const fs::path out(o.outputDir), pictures = out / "pictures", unpacked = out / "unpacked";
+    std::error_code ec;
+    fs::create_directories(pictures, ec);
+
+    // Every student of the whole class, named uniquely, in the same order on every shard.
+    std::vector<std::string> stems = pictureStems(subs);
+    ReportHeader header;
+    header.solution = o.reference;
+    for (const auto& s : settings) header.settings.push_back(settingLabel(s));
+    header.thresholds = thresholdsText(thresholds);
+    header.sandbox = !o.noSandbox;
+    std::vector<std::string> mine;
+    for (size_t i = 0; i < subs.size(); ++i)
+        if (inShard(i, shard, shards)) mine.push_back(stems[i]);
+    header.expected = int(mine.size());
+    // Resuming is only sound when the earlier run graded the same way.
+    if (o.resume && fs::exists(out / "grading.txt")) {
+        std::string text, why;
+        ReportHeader before;
+        std::vector<std::string> beforeStudents;
+        if (!readRegularFile((out / "grading.txt").string(), 1 << 24, text, why) ||
+            !parseRunHeader(text, before, beforeStudents, why)) {
+            std::cerr << fmt::format("glimmer: error: --resume: {}: {}\n", (out / "grading.txt").string(), why);
+            return kExitUsage;
+        }
+        if (before.solution != header.solution || before.settings != header.settings ||
+            before.thresholds != header.thresholds || before.sandbox != header.sandbox) {
+            std::cerr << fmt::format("glimmer: error: --resume: {} was graded with another solution, settings, "
+                                     "thresholds or sandbox; grade it again without --resume, or into another -o\n",
+                                     o.outputDir);
+            return kExitUsage;
+        }
+    }
+    writeWhole(out / "grading.txt", runHeaderText(header, stems));
+
+    // What an earlier run of this folder already graded.
+    std::vector<GradeRow> rows;
+    const fs::path records = out / "grades.jsonl";
+    if (o.resume && fs::exists(records)) {
+        std::string text, why;
+        if (!readRegularFile(records.string(), std::uint64_t(1) << 30, text, why)) {
+            std::cerr << fmt::format("glimmer: error: --resume: {}: cannot read it: it {}\n", records.string(), why);
+            return kExitUsage;
+        }
+        if (!parseRecords(text, records.string(), rows, why)) {
+            std::cerr << why << "\n";
+            return kExitUsage;
+        }
+        std::set<std::string> wanted(mine.begin(), mine.end());
+        std::erase_if(rows, [&](const GradeRow& r) { return !wanted.count(r.student); });
+    }
+    std::set<std::string> graded;
+    for (const auto& r : rows) graded.insert(r.student);
+    {  // the records file holds exactly what is kept, whole lines only
+        std::string kept;
+        for (const auto& r : rows) kept += gradeRecord(r) + "\n";
+        writeWhole(records, kept);
+    }
+    std::ofstream recordOut(records, std::ios::app);
+
+    // The solution first, at every setting.
+    BatchSettings solutionSettings = base;
+    solutionSettings.sandbox = false;  // the teacher's own files
+    solutionSettings.jobs = 1;
+    BatchJob solutionJob{o.reference, "", settings, {}, {}};
+    for (size_t k = 0; k < settings.size(); ++k)
+        solutionJob.outputs.push_back((pictures / fmt::format("solution-{}.png", k)).string());
+    auto solved = runBatch({solutionJob}, solutionSettings, {});
+    if (solved[0].exitCode != 0) {
+        std::cerr << solved[0].diagnostics;
+        std::cerr << fmt::format("glimmer: error: --reference {}: the solution does not render\n", o.reference);
+        return kExitUsage;
+    }
+    if (!solved[0].missing.empty()) {  // a --vary name the solution does not have: every student would "lack" it
+        std::cerr << fmt::format("glimmer: error: --vary {}: the solution {} has no uniform of that name\n",
+                                 solved[0].missing[0], o.reference);
+        return kExitUsage;
+    }
+    std::vector<Image> solutionPictures(settings.size());
+    for (size_t k = 0; k < settings.size(); ++k) {
+        std::string why;
+        loadImage(solutionJob.outputs[k], solutionPictures[k], why);
+    }
+
+    std::map<std::string, std::string> rowHtml;
+    auto lastWrite = std::chrono::steady_clock::now();
+    auto keep = [&](GradeRow r) {
+        // Nothing to compare: still show what was asked for (the solution at its defaults).
+        if (r.solution.empty()) r.solution = fs::relative(solutionJob.outputs[0], out, ec).string();
+        rows.push_back(r);
+        recordOut << gradeRecord(r) << "\n";
+        recordOut.flush();
+        if (std::chrono::steady_clock::now() - lastWrite > std::chrono::seconds(2)) {
+            writeReport(out, header, rows, rowHtml, out);
+            lastWrite = std::chrono::steady_clock::now();
+        }
+    };
+
+    // Unpack, find the script; what cannot be graded is a row at once.
+    std::vector<BatchJob> jobs;
+    std::vector<size_t> jobStudent;  // index into subs
+    for (size_t i = 0; i < subs.size(); ++i) {
+        if (!inShard(i, shard, shards) || graded.count(stems[i])) continue;
+        GradeRow r;
+        r.student = stems[i];
+        r.submission = subs[i].path;
+        std::string folder = subs[i].path, why;
+        if (subs[i].zip) {
+            folder = (unpacked / stems[i]).string();
+            fs::remove_all(folder, ec);
+            if (!safeUnzip(subs[i].path, folder, UnzipLimits{}, why)) {
+                r.verdict = "error";
+                r.notes = "the zip was refused";
+                r.diagnostics = why + "\n";
+                keep(r);
+                continue;
+            }
+        }
+        std::string script = findScript(folder, why);
+        if (script.empty()) {
+            r.verdict = "error";
+            r.notes = why.find("no .glib") != std::string::npos ? "no script" : "more than one script";
+            r.diagnostics = why + "\n";
+            keep(r);
+            continue;
+        }
+        // The submission's folder is readable too: the sandbox is the submission, not only the script's folder.
+        BatchJob job{script, "", settings, {}, {folder}};
+        for (size_t k = 0; k < settings.size(); ++k)
+            job.outputs.push_back((pictures / fmt::format("{}-{}.png", stems[i], k)).string());
+        jobs.push_back(job);
+        jobStudent.push_back(i);
+    }
+
+    Progress progress;
+    runBatch(jobs, base, [&](size_t done, size_t total) { progress.update(fmt::format("batch: {}/{} graded", done, total)); },
+             [&](size_t j, const BatchResult& result) {
+                 const size_t i = jobStudent[j];
+                 GradeRow r;
+                 r.student = stems[i];
+                 r.submission = subs[i].path;
+                 r.script = jobs[j].script;
+                 r.diagnostics = result.diagnostics;
+                 r.seconds = result.ms / 1000.0;
+                 if (result.written.size() != settings.size()) {
+                     r.verdict = "error";
+                     r.notes = failureNote(result.diagnostics);
+                     keep(r);
+                     return;
+                 }
+                 std::vector<Comparison> comparisons;
+                 for (size_t k = 0; k < settings.size(); ++k) {
+                     Image student;
+                     std::string why;
+                     loadImage(result.written[k], student, why);
+                     comparisons.push_back(comparePictures(student, solutionPictures[k]));
+                 }
+                 size_t worst = 0;
+                 Verdict v = judge(comparisons, result.missing, thresholds, worst);
+                 r.verdict = v.kind;
+                 r.score = v.score;
+                 r.notes = v.notes;
+                 r.ssim = comparisons[worst].ssim;
+                 r.psnr = comparisons[worst].psnr;
+                 r.worstSetting = settingLabel(settings[worst]);
+                 for (size_t k = 0; k < settings.size(); ++k)
+                     r.bySetting += fmt::format("{}{} {:.3f}", k ? " · " : "", settingLabel(settings[k]),
+                                                comparisons[k].ssim);
+                 r.picture = fs::relative(result.written[worst], out, ec).string();
+                 r.solution = fs::relative(solutionJob.outputs[worst], out, ec).string();
+                 keep(r);
+             });
+    progress.finish();
+    writeReport(out, header, rows, rowHtml, out);
+    std::map<std::string, int> counts;
+    for (const auto& r : rows) ++counts[r.verdict];
+    reportWrote(fmt::format("{} ({} submissions: {} pass, {} look, {} wrong, {} error), {}",
+                            (out / "report.html").string(), rows.size(), counts["pass"], counts["look"],
+                            counts["wrong"], counts["error"], (out / "grades.csv").string()));
+    return counts["error"] ? kExitScriptError : kExitOk;
+}
+
+}  // namespace glimmer

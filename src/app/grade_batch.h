@@ -1,0 +1,27 @@
+// glimmer batch with --reference (app/grade_batch.cpp), and what
+// batch-merge shares with it: the report written from rows.
+#pragma once
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "driver/batch.h"
+#include "driver/options.h"
+#include "grade/grade_report.h"
+
+namespace glimmer {
+
+// Grades the submissions in `inputs` (folders, zips, scripts) of shard I/N.
+int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs, int shard, int shards,
+                  const BatchSettings& settings);
+
+// report.html and grades.csv in `dir`, the rows' pictures read relative to
+// `picturesDir`; `rowHtml` caches each student's row (pictures encoded once).
+void writeReport(const std::filesystem::path& dir, const ReportHeader& header, std::vector<GradeRow> rows,
+                 std::map<std::string, std::string>& rowHtml, const std::filesystem::path& picturesDir);
+
+// `text` into `path` through a temporary file and a rename.
+bool writeWhole(const std::filesystem::path& path, const std::string& text);
+
+}  // namespace glimmer

@@ -1,0 +1,135 @@
+#include "grade/grade_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+
+#include <fmt/format.h>
+
+namespace glimmer {
+namespace {
+
+int rank(const std::string& verdict) {
+    static const std::map<std::string, int> order{{"error", 0}, {"wrong", 1}, {"look", 2}, {"pass", 3}};
+    auto it = order.find(verdict);
+    return it == order.end() ? 0 : it->second;
+}
+
+std::string dB(double v) { return std::isinf(v) ? "identical" : fmt::format("{:.1f} dB", v); }
+
+std::string csvCell(std::string text) {
+    if (!text.empty() && (text[0] == '=' || text[0] == '+' || text[0] == '-' || text[0] == '@')) text = "'" + text;
+    if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return out + "\"";
+}
+
+std::string firstLine(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+}  // namespace
+
+std::string htmlEscape(const std::string& text) {
+    std::string out;
+    out.reserve(text.size());
+    for (char c : text) {
+        switch (c) {
+        case '&': out += "&amp;"; break;
+        case '<': out += "&lt;"; break;
+        case '>': out += "&gt;"; break;
+        case '"': out += "&quot;"; break;
+        case '\'': out += "&#39;"; break;
+        default: out += c;
+        }
+    }
+    return out;
+}
+
+void sortForReview(std::vector<GradeRow>& rows) {
+    std::stable_sort(rows.begin(), rows.end(), [](const GradeRow& a, const GradeRow& b) {
+        if (rank(a.verdict) != rank(b.verdict)) return rank(a.verdict) < rank(b.verdict);
+        if (a.score != b.score) return a.score < b.score;
+        return a.student < b.student;
+    });
+}
+
+std::string reportRowHtml(const GradeRow& r, const RowPictures& p) {
+    auto img = [](const std::string& url, const std::string& alt) {
+        return url.empty() ? fmt::format("<div class=none>no {}</div>", alt)
+                           : fmt::format("<img src=\"{}\" alt=\"{}\" title=\"{}\">", url, alt, alt);
+    };
+    std::string measures = r.verdict == "error"
+                               ? std::string("&nbsp;")
+                               : fmt::format("SSIM {:.3f} · PSNR {}<br>worst at {}{}", r.ssim, htmlEscape(dB(r.psnr)),
+                                             htmlEscape(r.worstSetting),
+                                             r.bySetting.empty() ? "" : "<br>SSIM by setting: " + htmlEscape(r.bySetting));
+    return fmt::format(
+        "<tr class=\"{0}\" id=\"s-{1}\"><td class=who><b>{1}</b><br><span class=v>{0}</span> <span class=score>{2}</span><br>"
+        "<small>{3:.2f} s</small></td>\n<td class=pics>{4}{5}{6}</td>\n<td class=why><small>{7}</small>"
+        "{8}{9}</td></tr>\n",
+        htmlEscape(r.verdict), htmlEscape(r.student), r.score, r.seconds, img(p.student, "student"),
+        img(p.solution, "solution"), img(p.difference, "difference x4"), measures,
+        r.notes.empty() ? "" : "<p>" + htmlEscape(r.notes) + "</p>",
+        r.diagnostics.empty() ? "" : "<pre>" + htmlEscape(r.diagnostics) + "</pre>");
+}
+
+std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows, const std::vector<std::string>& rowHtml) {
+    std::map<std::string, int> counts;
+    for (const auto& r : rows) ++counts[r.verdict];
+    std::string settings;
+    for (const auto& s : h.settings) settings += (settings.empty() ? "" : " · ") + htmlEscape(s);
+    std::string out;
+    out += "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>Grades: " + htmlEscape(h.solution) +
+           "</title>\n<style>\n"
+           "body{font:14px/1.35 system-ui,sans-serif;margin:16px;color:#222}\n"
+           "h1{font-size:20px;margin:0 0 4px}\n.how{color:#555;margin:0 0 10px}\n"
+           ".counts span{display:inline-block;padding:2px 8px;margin-right:6px;border-radius:3px}\n"
+           "table{border-collapse:collapse;width:100%}\ntd{border-top:1px solid #ddd;padding:6px;vertical-align:top}\n"
+           "td.who{width:150px}\ntd.pics{width:312px;white-space:nowrap}\n"
+           "td.pics img,.none{width:96px;height:96px;margin-right:4px;image-rendering:pixelated;border:1px solid #ccc;"
+           "display:inline-block;vertical-align:top;object-fit:contain;background:#eee}\n"
+           ".none{font-size:11px;color:#888;text-align:center;line-height:96px}\n"
+           "pre{margin:4px 0 0;font-size:12px;background:#f6f6f6;padding:4px;max-height:9em;overflow:auto;white-space:pre-wrap}\n"
+           "td.why p{margin:2px 0}\n.v{font-weight:bold;text-transform:uppercase;font-size:12px}\n"
+           ".score{font-size:18px}\n"
+           "tr.error .v,.counts .error{color:#fff;background:#b00}\ntr.wrong .v,.counts .wrong{color:#fff;background:#d60}\n"
+           "tr.look .v,.counts .look{background:#fd4}\ntr.pass .v,.counts .pass{color:#fff;background:#282}\n"
+           "tr .v{padding:0 4px;border-radius:3px}\n"
+           ".glance{line-height:1.9;margin:0 0 10px}\n.glance a{display:inline-block;min-width:84px;padding:0 4px;"
+           "margin:0 2px 2px 0;font-size:12px;text-decoration:none;color:inherit;border-radius:3px;background:#eee}\n"
+           ".glance a.error{color:#fff;background:#b00}\n.glance a.wrong{color:#fff;background:#d60}\n"
+           ".glance a.look{background:#fd4}\n.glance a.pass{background:#cec}\n"
+           "</style></head><body>\n";
+    out += "<h1>Grades against " + htmlEscape(h.solution) + "</h1>\n";
+    out += fmt::format("<p class=how>{} submissions{} · compared at {} setting{}: {} · {} · sandbox {}</p>\n",
+                       rows.size(),
+                       h.expected > int(rows.size()) ? fmt::format(" of {} (the rest still running)", h.expected) : "",
+                       h.settings.size(), h.settings.size() == 1 ? "" : "s", settings, htmlEscape(h.thresholds),
+                       h.sandbox ? "on" : "<b>off</b>");
+    out += "<p class=counts>";
+    for (const char* v : {"error", "wrong", "look", "pass"})
+        out += fmt::format("<span class={0}>{1} {0}</span>", v, counts[v]);
+    out += "<small>pictures: the student's, the solution's, their difference x4, at the worst setting</small></p>\n";
+    // At a glance: every student as a chip in the table's order, a link to its row.
+    out += "<p class=glance>";
+    for (const auto& r : rows)
+        out += fmt::format("<a class={} href=\"#s-{}\">{} {}</a>", htmlEscape(r.verdict), htmlEscape(r.student),
+                           htmlEscape(r.student), r.score);
+    out += "</p>\n<table>\n";
+    for (const auto& row : rowHtml) out += row;
+    out += "</table>\n</body></html>\n";
+    return out;
+}
+
+std::string gradesCsv(std::vector<GradeRow> rows) {
+    std::sort(rows.begin(), rows.end(), [](const GradeRow& a, const GradeRow& b) { return a.student < b.student; });
+    std::string out = "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic\n";
+    for (const auto& r : rows)
+        out += fmt::format("{},{},{},{},{},{:.2f},{},{}\n", csvCell(r.student), r.score, r.verdict,
+                           r.verdict == "error" ? "" : fmt::format("{:.4f}", r.ssim),
+                           r.verdict == "error" ? "" : std::isinf(r.psnr) ? "inf" : fmt::format("{:.2f}", r.psnr),
+                           r.seconds, csvCell(r.notes), csvCell(firstLine(r.diagnostics)));
+    return out;
+}
+
+}  // namespace glimmer

@@ -1,0 +1,45 @@
+// What a teacher reads after a grading run: one self-contained HTML page
+// (pictures inline as data URLs, so it can be mailed or archived as one
+// file) and a CSV a gradebook imports. Pure text from rows; no GL.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "grade/grade_row.h"
+
+namespace glimmer {
+
+// What the page says above the rows: how the grading was done.
+struct ReportHeader {
+    std::string solution;                 // the reference script
+    std::vector<std::string> settings;    // their labels
+    std::string thresholds;               // in words
+    bool sandbox = true;
+    int expected = 0;                     // submissions in the class (the page says how many are still missing)
+};
+
+// The pictures of one row, as data URLs ("" where there is none).
+struct RowPictures {
+    std::string student, solution, difference;
+};
+
+// The ones needing a person first: error, wrong, look, pass; within each,
+// the lowest score first, then by name.
+void sortForReview(std::vector<GradeRow>& rows);
+
+// One row of the page's table (cached by the caller: a page is rewritten as
+// results arrive, and a row's pictures are encoded only once).
+std::string reportRowHtml(const GradeRow& row, const RowPictures& pictures);
+// The whole page around rows made by reportRowHtml, in the order given.
+std::string reportHtml(const ReportHeader& header, const std::vector<GradeRow>& rows,
+                       const std::vector<std::string>& rowHtml);
+
+// student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic: one
+// line per row in name order, quoted where needed; a cell that a
+// spreadsheet would run as a formula (= + - @ first) starts with a quote.
+std::string gradesCsv(std::vector<GradeRow> rows);
+
+// Text for HTML: & < > " ' escaped.
+std::string htmlEscape(const std::string& text);
+
+}  // namespace glimmer

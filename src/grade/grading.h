@@ -1,0 +1,69 @@
+// Grading one submission's pictures against the solution's: which slider
+// settings to try, how alike two pictures are, and the verdict. Pure
+// functions on pictures already rendered; no GL.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "image/image.h"
+
+namespace glimmer {
+
+// One slider of the solution: `uX <min value max>` in a Program line.
+struct Slider {
+    std::string name;
+    double min = 0, value = 0, max = 0;
+};
+
+// One setting: "name=value" assignments (`--set` syntax); empty: the script's own values.
+using Setting = std::vector<std::string>;
+
+// The solution's defaults first, then each slider at its min and at its max
+// with the others at their defaults (a picture painted for one setting then
+// fails the others), at most `maxSettings` in all, repeated values skipped.
+std::vector<Setting> settingsFromSliders(const std::vector<Slider>& sliders, size_t maxSettings = 16);
+
+// --vary NAME=a,b,c (one or more): defaults first, then each value of each
+// name with the rest at their defaults. False, with `error`, on a malformed one.
+bool settingsFromVary(const std::vector<std::string>& vary, std::vector<Setting>& out, std::string& error);
+
+// "uX=0.5, uY=1", or "defaults" for the empty setting.
+std::string settingLabel(const Setting& s);
+
+struct Comparison {
+    double psnr = 0;   // dB over RGB, peak 1; +inf when identical
+    double ssim = 0;   // mean SSIM of the luma (reference/ssim.h), 8x8 windows
+    bool blank = false;  // the student's picture is a single colour and the solution's is not
+};
+
+// Both RGBA8. A size mismatch compares as PSNR 0, SSIM 0.
+Comparison comparePictures(const Image& student, const Image& solution);
+
+// |student - solution| per channel, times 4 (small errors show), opaque.
+Image differencePicture(const Image& student, const Image& solution);
+
+// A box-filtered copy whose longer side is at most `maxSide`.
+Image thumbnail(const Image& picture, int maxSide);
+
+struct Thresholds {
+    double passSsim = 0.95, passPsnr = 30;  // both, at every setting: pass
+    double lookSsim = 0.70;                 // at the worst setting: close enough for a person to look
+};
+
+// "pass", "look" (needs a person), "wrong", "error" (nothing to compare:
+// no script, does not compile, timed out, crashed).
+struct Verdict {
+    std::string kind;
+    int score = 0;      // 100 x the worst setting's SSIM, clamped to 0..100; 0 for "error"
+    std::string notes;  // why, in words
+};
+
+// `worst`: the setting with the lowest SSIM. `missing`: uniforms the
+// solution has and the submission lacks (a pass becomes "look").
+Verdict judge(const std::vector<Comparison>& perSetting, const std::vector<std::string>& missing,
+              const Thresholds& t, size_t& worst);
+
+// Standard base64 (RFC 4648, with padding), for data URLs.
+std::string base64(const std::vector<std::uint8_t>& bytes);
+
+}  // namespace glimmer

@@ -1,0 +1,107 @@
+#include "grade/submissions.h"
+
+#include <algorithm>
+#include <filesystem>
+
+#include <fmt/format.h>
+
+namespace glimmer {
+namespace fs = std::filesystem;
+namespace {
+
+bool hasExtension(const fs::path& p, const std::string& ext) {
+    std::string e = p.extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return e == ext;
+}
+
+bool skipped(const fs::path& p) {
+    const std::string n = p.filename().string();
+    return n.empty() || n[0] == '.' || n == "__MACOSX";
+}
+
+bool holdsScript(const fs::path& dir) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(dir, ec))
+        if (!skipped(e.path()) && e.is_regular_file(ec) && hasExtension(e.path(), ".glib")) return true;
+    return false;
+}
+
+}  // namespace
+
+std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, std::vector<std::string>& errors) {
+    std::vector<Submission> out;
+    for (const auto& input : inputs) {
+        fs::path p(input);
+        std::error_code ec;
+        if (fs::is_regular_file(p, ec) && hasExtension(p, ".zip")) {
+            out.push_back({p.stem().string(), input, true});
+        } else if (fs::is_regular_file(p, ec) && hasExtension(p, ".glib")) {
+            out.push_back({p.parent_path().filename().string().empty() ? p.stem().string()
+                                                                       : p.parent_path().filename().string(),
+                           input, false});
+        } else if (fs::is_directory(p, ec)) {
+            if (holdsScript(p)) {
+                fs::path n = fs::absolute(p).lexically_normal();
+                if (n.filename().empty()) n = n.parent_path();
+                out.push_back({n.filename().string(), input, false});
+                continue;
+            }
+            std::vector<Submission> inside;
+            for (const auto& e : fs::directory_iterator(p, ec)) {
+                if (skipped(e.path())) continue;
+                if (e.is_directory(ec)) inside.push_back({e.path().filename().string(), e.path().string(), false});
+                else if (e.is_regular_file(ec) && hasExtension(e.path(), ".zip"))
+                    inside.push_back({e.path().stem().string(), e.path().string(), true});
+            }
+            if (inside.empty()) errors.push_back(fmt::format("{}: error: no submission folders, zips or .glib scripts in this folder", input));
+            out.insert(out.end(), inside.begin(), inside.end());
+        } else {
+            errors.push_back(fmt::format("{}: error: not a folder, a .zip or a .glib script", input));
+        }
+    }
+    std::stable_sort(out.begin(), out.end(), [](const Submission& a, const Submission& b) {
+        return a.name != b.name ? a.name < b.name : a.path < b.path;
+    });
+    return out;
+}
+
+std::string findScript(const std::string& folder, std::string& error) {
+    error.clear();
+    fs::path root(folder);
+    std::error_code ec;
+    if (fs::is_regular_file(root, ec) && hasExtension(root, ".glib")) return folder;
+    if (!fs::is_directory(root, ec)) {
+        error = fmt::format("{}: error: not a folder", folder);
+        return "";
+    }
+    std::vector<std::string> found;
+    int looked = 0;
+    auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
+    for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
+        if (++looked > 10000) {
+            error = fmt::format("{}: error: more than 10000 files; not searched further", folder);
+            return "";
+        }
+        const fs::path& p = it->path();
+        if (skipped(p)) {
+            if (it->is_directory(ec)) it.disable_recursion_pending();
+            continue;
+        }
+        if (it->is_directory(ec) && it.depth() >= 2) it.disable_recursion_pending();  // three levels: 0, 1, 2
+        if (it->is_regular_file(ec) && !it->is_symlink(ec) && hasExtension(p, ".glib"))
+            found.push_back(p.lexically_relative(root).string());
+    }
+    std::sort(found.begin(), found.end());
+    if (found.size() == 1) return (root / found[0]).string();
+    if (found.empty()) {
+        error = fmt::format("{}: error: no .glib script in this submission", folder);
+    } else {
+        std::string names;
+        for (const auto& f : found) names += (names.empty() ? "" : ", ") + f;
+        error = fmt::format("{}: error: {} .glib scripts ({}); keep one", folder, found.size(), names);
+    }
+    return "";
+}
+
+}  // namespace glimmer

@@ -1,0 +1,30 @@
+// A class as it arrives: a folder of folders (or zips), one per student.
+// Which entries are submissions, and which script in each is the one to
+// grade. Reads folders only; no GL, nothing unpacked here.
+#pragma once
+#include <string>
+#include <vector>
+
+namespace glimmer {
+
+struct Submission {
+    std::string name;    // the student: the folder's name, or the zip's without ".zip"
+    std::string path;    // the folder, the zip, or a lone .glib
+    bool zip = false;
+};
+
+// The submissions in `inputs`, in name order: a .zip is one; a folder with a
+// .glib directly inside is one; any other folder is a class, and each folder
+// and zip directly inside it is one; a .glib file is one on its own. Hidden
+// entries and __MACOSX are skipped. `errors` gets a line for each input that
+// is none of these.
+std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, std::vector<std::string>& errors);
+
+// The one .glib in a submission folder, searched up to three folders deep
+// (hidden folders and __MACOSX skipped; at most 10000 entries looked at).
+// "" with `error` set ("class/bob: error: no .glib script in this
+// submission", "... 2 .glib scripts (a.glib, sub/b.glib); keep one") otherwise.
+// A path ending in .glib is its own script.
+std::string findScript(const std::string& folder, std::string& error);
+
+}  // namespace glimmer

@@ -1,0 +1,7 @@
+#version 330 compatibility
+out vec2 vST;
+void main( )
+{
+    vST = gl_MultiTexCoord0.st;
+    gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;
+}

@@ -1,0 +1,117 @@
+// Settings to try, verdicts, and the comparison of real pixels.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "grade/grading.h"
+
+namespace glimmer {
+namespace {
+
+Image gradient(int w, int h, int shift = 0) {
+    Image p = Image::rgba8(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t* t = &p.u8[(size_t(y) * size_t(w) + size_t(x)) * 4];
+            t[0] = std::uint8_t(std::clamp(x + shift, 0, w - 1) * 255 / (w - 1));
+            t[1] = std::uint8_t(((x + shift) / 8 + y / 8) % 2 * 200);
+            t[2] = 40;
+            t[3] = 255;
+        }
+    return p;
+}
+
+TEST(Grading, SlidersGiveDefaultsThenEachEnd) {
+    auto s = settingsFromSliders({{"uA", 0, 0.5, 1}, {"uB", 1, 1, 4}});
+    ASSERT_EQ(s.size(), 4u);  // uB's min is its default: not tried twice
+    EXPECT_EQ(settingLabel(s[0]), "defaults");
+    EXPECT_EQ(settingLabel(s[1]), "uA=0");
+    EXPECT_EQ(settingLabel(s[2]), "uA=1");
+    EXPECT_EQ(settingLabel(s[3]), "uB=4");
+    EXPECT_EQ(settingsFromSliders({{"uA", 0, 0.5, 1}, {"uB", 1, 2, 4}}, 3).size(), 3u);
+}
+
+TEST(Grading, VaryGivesItsValues) {
+    std::vector<Setting> s;
+    std::string error;
+    ASSERT_TRUE(settingsFromVary({"uA=0.25,0.75", "uB=3"}, s, error));
+    ASSERT_EQ(s.size(), 4u);
+    EXPECT_EQ(settingLabel(s[1]), "uA=0.25");
+    EXPECT_EQ(settingLabel(s[3]), "uB=3");
+    EXPECT_FALSE(settingsFromVary({"uA"}, s, error));
+    EXPECT_EQ(error, "--vary 'uA' is not NAME=V1,V2,...");
+    EXPECT_FALSE(settingsFromVary({"uA=,"}, s, error));
+    EXPECT_EQ(error, "--vary 'uA=,' gives no values");
+}
+
+TEST(Grading, TheSamePictureIsIdenticalAndAShiftedOneIsClose) {
+    Image a = gradient(32, 32), b = gradient(32, 32, 1);
+    Comparison same = comparePictures(a, a);
+    EXPECT_TRUE(std::isinf(same.psnr));
+    EXPECT_DOUBLE_EQ(same.ssim, 1.0);
+    EXPECT_FALSE(same.blank);
+    Comparison shifted = comparePictures(b, a);
+    EXPECT_LT(shifted.ssim, 1.0);
+    EXPECT_GT(shifted.ssim, 0.5);
+    Image blank = Image::rgba8(32, 32);
+    Comparison c = comparePictures(blank, a);
+    EXPECT_TRUE(c.blank);
+    EXPECT_LT(c.ssim, 0.1);
+    Comparison sizes = comparePictures(gradient(16, 16), a);
+    EXPECT_EQ(sizes.ssim, 0.0);
+    EXPECT_EQ(sizes.psnr, 0.0);
+}
+
+TEST(Grading, TheDifferencePictureShowsSmallErrorsFourTimes) {
+    Image a = Image::rgba8(1, 1), b = Image::rgba8(1, 1);
+    a.u8 = {10, 200, 0, 255};
+    b.u8 = {12, 100, 0, 255};
+    Image d = differencePicture(a, b);
+    EXPECT_EQ(d.u8, (std::vector<std::uint8_t>{8, 255, 0, 255}));
+}
+
+TEST(Grading, ThumbnailsAverageBoxes) {
+    Image p = Image::rgba8(4, 2);
+    for (size_t i = 0; i < p.u8.size(); i += 4) p.u8[i] = (i / 4) % 2 ? 200 : 100;
+    Image t = thumbnail(p, 2);
+    ASSERT_EQ(t.width, 2);
+    ASSERT_EQ(t.height, 1);
+    EXPECT_EQ(t.u8[0], 150);
+}
+
+TEST(Grading, VerdictsFollowTheThresholds) {
+    Thresholds t;
+    size_t worst = 9;
+    Comparison perfect{INFINITY, 1.0, false}, close{28, 0.9, false}, far{12, 0.3, false}, blank{10, 0.02, true};
+    Verdict v = judge({perfect, perfect}, {}, t, worst);
+    EXPECT_EQ(v.kind, "pass");
+    EXPECT_EQ(v.score, 100);
+    EXPECT_EQ(v.notes, "");
+    v = judge({perfect, close, perfect}, {}, t, worst);
+    EXPECT_EQ(v.kind, "look");
+    EXPECT_EQ(worst, 1u);
+    EXPECT_EQ(v.score, 90);
+    EXPECT_EQ(v.notes, "SSIM 0.900, PSNR 28.0 dB at the worst setting");
+    v = judge({perfect, far}, {}, t, worst);  // right at the defaults is not enough
+    EXPECT_EQ(v.kind, "wrong");
+    EXPECT_EQ(v.score, 30);
+    v = judge({blank}, {}, t, worst);
+    EXPECT_EQ(v.kind, "wrong");
+    EXPECT_EQ(v.notes, "the picture is a single colour");
+    v = judge({perfect}, {"uPower"}, t, worst);
+    EXPECT_EQ(v.kind, "look");
+    EXPECT_EQ(v.notes, "lacks the solution's uniform uPower");
+    EXPECT_EQ(judge({}, {}, t, worst).kind, "error");
+}
+
+TEST(Grading, Base64MatchesRfc4648) {
+    auto b = [](const std::string& s) { return base64(std::vector<std::uint8_t>(s.begin(), s.end())); };
+    EXPECT_EQ(b(""), "");
+    EXPECT_EQ(b("f"), "Zg==");
+    EXPECT_EQ(b("fo"), "Zm8=");
+    EXPECT_EQ(b("foo"), "Zm9v");
+    EXPECT_EQ(b("foobar"), "Zm9vYmFy");
+}
+
+}  // namespace
+}  // namespace glimmer
