@@ -2,11 +2,12 @@
 // SCRIPT (a bundled lesson path) in the live view, drags each named slider
 // of the panel with the mouse (real input events over the DevTools
 // protocol, at the control's place on the canvas), then breaks a shader the
-// way a student's typo would, typed into the page's editor: the error on
+// way a student's typo would, typed into the page's editor (after a line
+// added to SCRIPT and Save file, which downloads it: OUT_DIR/downloads): the error on
 // its line, a click on the message going to it, the edit surviving a
 // reload of the page, Revert. Writes OUT_DIR/slider-NAME.png (the picture
 // after each slider) and OUT_DIR/broken.png (after the typo), and prints
-// one JSON object: { sliders: [{ name, value, drawn }], broken, clicked,
+// one JSON object: { sliders: [{ name, value, drawn }], saved, broken, clicked,
 // reloaded, restored }, each of the last four the page's state then
 // (exit, errors, value, diagnostics, the editor's file, cursor line,
 // marked lines and messages, text).
@@ -16,7 +17,7 @@
 // SHADER (its path as the script's diagnostics name it) gets an undeclared name on LINE
 // (SHADER "-": the sliders only); FRACTION is where
 // along the slider the mouse presses (0 its left end, 1 its right).
-import { writeFileSync } from "node:fs";
+import { existsSync, readdirSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
 import { openPage, sleep } from "./cdp-page.mjs";
 
@@ -66,6 +67,22 @@ if (shader === "-") {  // sliders only
   page.close(0);
   await new Promise(() => {});  // close() ends the process once Chromium has gone
 }
+
+// Save file with no folder to write into (the bundled lesson): the edited
+// script is downloaded as the browser allows, to OUT_DIR/downloads; the
+// kept edit stays until Revert.
+await page.send("Page.setDownloadBehavior", { behavior: "allow", downloadPath: join(outDir, "downloads") });
+await page.evaluate(`glimmerPage.editor().open(${JSON.stringify(script)}, 1, 1);
+  glimmerPage.editor().cm.setCursor({ line: glimmerPage.editor().cm.lineCount() - 1, ch: 10000 }); glimmerPage.editor().cm.focus()`);
+await page.send("Input.insertText", { text: "\n# saved from the page\n" });
+await sleep(800);
+await page.evaluate(`document.getElementById("save-file").click()`);
+const downloaded = () => existsSync(join(outDir, "downloads")) && readdirSync(join(outDir, "downloads")).some((f) => !f.endsWith(".crdownload"));
+for (let i = 0; i < 50 && !downloaded(); ++i) await sleep(100);
+result.saved = { note: await page.evaluate(`document.getElementById("edit-note").textContent`),
+                 kept: await page.evaluate(`Object.keys(localStorage).filter((k) => k.startsWith("glimmer-draft")).length`) };
+await page.evaluate(`document.getElementById("revert").click()`);
+await sleep(800);
 
 // A typo typed into the page's editor at the end of LINE of SHADER (real
 // key input into CodeMirror); the page reloads the script once typing stops.

@@ -129,10 +129,10 @@ page_dom "file://$pictures/lesson.html" |
   python3 -c '
 import base64, re, sys
 m = re.search(r"data-png=\"data:image/png;base64,([^\"]*)\"", sys.stdin.read())
-sys.stdout.buffer.write(base64.b64decode(m.group(1)) m else b"")' > "$pictures/packed.png"
+sys.stdout.buffer.write(base64.b64decode(m.group(1)) if m else b"")' > "$pictures/packed.png"
 "$g" -q render "$pictures/lesson/lit_es.glib" --size 512x512 -o "$pictures/packed_desktop.png"
 echo "  a packed lesson, opened from disk, against render"
-if [ -s "$pictures/packed.png" ] && same_picture "$pictures/packed.png" "$pictures/packed_desktop.png"
+[ -s "$pictures/packed.png" ] && same_picture "$pictures/packed.png" "$pictures/packed_desktop.png"
 tally $? "the packed lesson did not draw render's picture"
 
 # A user picks a glman classroom folder (script, shaders) with the page's
@@ -201,6 +201,12 @@ check_live() {  # DESCRIPTION PYTHON-CONDITION over the page's states
     "$live" "$2" 2>/dev/null
   tally $? "$1: $(cut -c1-2000 <<<"$live")"
 }
+# Save file, with no folder to write into, downloads the edited script.
+python3 -c 'import sys; sys.exit(open(sys.argv[1]).read() != open(sys.argv[2]).read() + "\n# saved from the page\n")' \
+  "$pictures/live/downloads/bloom.glib" scripts/bloom.glib 2>/dev/null
+tally $? "Save file did not download the edited bloom.glib ($(ls "$pictures/live/downloads" 2>&1))"
+check_live "a download keeps the edit in the browser until it is saved or reverted" \
+  "saved['kept'] == 1 and 'downloaded' in saved['note']"
 check_live "a typo typed into bloom.frag must be one error, '$want', marked on line 13 of the editor, the value kept" \
   "broken['exit'] == 1 and broken['errors'] == 1 and \"$want\" in broken['diagnostics'] and broken['value'] == '$add'
    and broken['shown'] == 'shaders/bloom.frag' and broken['markedLines'] == '13'
