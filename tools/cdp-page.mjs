@@ -25,7 +25,12 @@ export async function openPage(url, seconds = 120) {
     "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist", "--allow-file-access-from-files",
     "--remote-debugging-port=0", "about:blank"], { stdio: "ignore" });
   const close = (code) => {
-    browser.once("exit", () => { rmSync(profile, { recursive: true, force: true }); process.exit(code); });
+    // Chromium's helpers may still be writing the profile as it exits: retry,
+    // and never let a leftover folder turn a result into a crash.
+    browser.once("exit", () => {
+      try { rmSync(profile, { recursive: true, force: true, maxRetries: 10, retryDelay: 100 }); } catch {}
+      process.exit(code);
+    });
     browser.kill();
   };
   setTimeout(() => { console.error(`no result from the page in ${seconds} s`); close(1); }, seconds * 1000);

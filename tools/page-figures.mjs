@@ -22,6 +22,7 @@ await page.navigate();
 const figures = await page.evaluate(`({
   exit: document.getElementById("verdict").dataset.exit,
   firstPictureMs: Number(document.body.dataset.firstPictureMs),
+  moduleReadyMs: Number(document.body.dataset.moduleReadyMs),
   frameMs: Number(document.getElementById("picture").dataset.frameMs),
   renderer: (() => {
     const gl = document.createElement("canvas").getContext("webgl2");
