@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <regex>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -124,6 +125,48 @@ std::string constName(const std::string& message) {
                                                                     : message.substr(open, close - open + 1);
 }
 
+// A `#version N` line with no profile word and N >= 150 (the core profile,
+// GLSL 1.50 on): its line (1-based) and number; 0 when the text has none.
+// Only the first directive counts, as for the compiler.
+int profilelessVersionLine(const std::string& text, int& version) {
+    static const std::regex directive(R"(^[ \t]*#[ \t]*version[ \t]+(\d+)[ \t]*(\w*)[ \t]*(//.*)?\r?$)");
+    std::istringstream in(text);
+    std::string line;
+    for (int n = 1; std::getline(in, line); ++n) {
+        if (line.find("#") == std::string::npos || line.find("version") == std::string::npos) continue;
+        std::smatch m;
+        if (!std::regex_match(line, m, directive)) return 0;
+        version = std::stoi(m[1].str());
+        return version >= 150 && m[2].str().empty() ? n : 0;
+    }
+    return 0;
+}
+
+// `text` with " compatibility" after the number of its `#version` on `line`.
+std::string withCompatibilityProfile(const std::string& text, int line) {
+    size_t at = 0;
+    for (int n = 1; n < line && at != std::string::npos; ++n) at = text.find('\n', at) + 1;
+    size_t end = text.find_first_of("\r\n", at);
+    std::string directive = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    size_t number = directive.find_first_of("0123456789");
+    size_t after = directive.find_first_not_of("0123456789", number);
+    directive.insert(after == std::string::npos ? directive.size() : after, " compatibility");
+    return text.substr(0, at) + directive + (end == std::string::npos ? "" : text.substr(end));
+}
+
+// The first compatibility built-in an error of the log names as undeclared
+// ("gl_Vertex"); "" when none does.
+std::string undeclaredBuiltin(const Diagnostics& said) {
+    static const std::regex name(R"(gl_[A-Za-z0-9_]+)");
+    for (const auto& d : said.all()) {
+        std::smatch m;
+        if (d.severity == Severity::Error && d.message.find("undeclared") != std::string::npos &&
+            std::regex_search(d.message, m, name))
+            return m.str();
+    }
+    return {};
+}
+
 struct Compiled {
     unsigned shader = 0;
     GLint status = 0;
@@ -183,6 +226,29 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
             continue;
         }
         Compiled c = compileStage(gl, stage, text, prelude, scriptFile);
+        // `#version 400` with no profile word is the core profile (GLSL 1.50
+        // on), which has no gl_Vertex, gl_ModelViewProjectionMatrix,
+        // gl_FragColor...; NVIDIA's driver compiles such a shader in a
+        // compatibility context as if it said `compatibility`, and classroom
+        // scripts rely on it. Compiled again with the word added (lines keep
+        // their numbers), and said.
+        int version = 0;
+        if (int line = !c.status ? profilelessVersionLine(text, version) : 0; line > 0) {
+            if (std::string builtin = undeclaredBuiltin(c.said); !builtin.empty()) {
+                Compiled again = compileStage(gl, stage, withCompatibilityProfile(text, line), prelude, scriptFile);
+                if (again.status) {
+                    gl.DeleteShader(c.shader);
+                    c = std::move(again);
+                    diags.warning(stage.path, {line, 1},
+                                  fmt::format("'#version {0}' with no profile is the core profile, which has no {1}: "
+                                              "compiled as '#version {0} compatibility', as NVIDIA's driver does; "
+                                              "write 'compatibility' after {0} to run everywhere",
+                                              version, builtin));
+                } else {
+                    gl.DeleteShader(again.shader);
+                }
+            }
+        }
         // NVIDIA accepts a local const initialised from a non-constant
         // expression in any GLSL version; GLSL 4.20 allows it for locals
         // (ARB_shading_language_420pack), so Mesa does too once that is on.

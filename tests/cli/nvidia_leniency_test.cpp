@@ -1,8 +1,12 @@
 // What NVIDIA accepted (issue 19): a local const initialised from a
 // non-constant expression compiles (GLSL 4.20 allows it; Mesa does once
 // ARB_shading_language_420pack is on), with a warning that says so; a global
-// one stays an error, with a note that names the cause and the fix.
+// one stays an error, with a note that names the cause and the fix. A
+// '#version 400' shader (the core profile) using compatibility built-ins
+// compiles as 'compatibility', with a warning; a real error in one stays.
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "cli/run_glimmer.h"
 #include "image/image.h"
@@ -43,6 +47,44 @@ TEST(CliNvidiaLeniency, AGlobalConstFromAUniformStaysAnErrorWithItsFix) {
                                   "const float k2 = uK * 2.;\n"
                                   "                 ^\n"
                                   "1 error, 0 warnings\n");
+}
+
+TEST(CliNvidiaLeniency, ACoreVersionWithCompatibilityBuiltinsCompilesAsCompatibilityAndSaysSo) {
+    TempDir dir;
+    const std::string vert = cliData("core_version.vert");
+    auto r = runGlimmer({"render", cliData("core_version.glib"), "-o", dir.file("core.png"), "--size", "16x16",
+                         "--backend", "osmesa"});
+    ASSERT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err.substr(0, r.err.find("wrote ")),
+              vert + ":1:1: warning: '#version 400' with no profile is the core profile, which has no "
+                     "gl_MultiTexCoord0: compiled as '#version 400 compatibility', as NVIDIA's driver does; write "
+                     "'compatibility' after 400 to run everywhere\n"
+                     "#version 400\n"
+                     "^\n");
+    // The picture is the one of the same shaders saying 'compatibility'.
+    auto same = runGlimmer({"render", cliData("core_version_compat.glib"), "-o", dir.file("compat.png"), "--size",
+                            "16x16", "--backend", "osmesa"});
+    ASSERT_EQ(same.exitCode, 0) << same.err;
+    EXPECT_EQ(same.err.find("warning"), std::string::npos) << same.err;
+    glimmer::Image core, compat;
+    std::string why;
+    ASSERT_TRUE(glimmer::loadImage(dir.file("core.png"), core, why)) << why;
+    ASSERT_TRUE(glimmer::loadImage(dir.file("compat.png"), compat, why)) << why;
+    EXPECT_EQ(core.u8, compat.u8);
+    EXPECT_EQ(core.u8[(8 * 16 + 8) * 4 + 0], 128);  // uK = .5 in red
+}
+
+TEST(CliNvidiaLeniency, ACoreVersionShaderWithARealErrorKeepsTheDriversMessage) {
+    TempDir dir;
+    std::string text = "#version 400\nout vec2 vST;\nvoid main() { vST = noSuchThing; gl_Position = gl_Vertex; }\n";
+    std::ofstream(dir.file("bad.vert")) << text;
+    std::ofstream(dir.file("red.frag")) << "#version 400 compatibility\nin vec2 vST;\nvoid main() { gl_FragColor = "
+                                           "vec4(1., vST, 1.); }\n";
+    std::ofstream(dir.file("s.glib")) << "Ortho -1 1 -1 1\nVertex bad.vert\nFragment red.frag\nProgram P\nQuadXY 0 1\n";
+    auto r = runGlimmer({"check", dir.file("s.glib"), "--backend", "osmesa"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find("`noSuchThing' undeclared"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("compiled as '#version 400 compatibility'"), std::string::npos) << r.err;
 }
 
 }  // namespace
