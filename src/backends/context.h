@@ -31,7 +31,9 @@ std::unique_ptr<GlContext> createEglGlesContext(std::string& error);
 
 // The browser build's only backend (backends/webgl_context.cpp): WebGL 2 on
 // the page's canvas named by the CSS selector ("#canvas").
-std::unique_ptr<GlContext> createWebGl2Context(const char* canvasSelector, std::string& error);
+// `floatTargets` false leaves EXT_color_buffer_float off, as a browser
+// without it would (the test of what such a browser says).
+std::unique_ptr<GlContext> createWebGl2Context(const char* canvasSelector, std::string& error, bool floatTargets = true);
 
 // auto: a GPU through EGL, else OSMesa, else EGL surfaceless. egl: device,
 // else surfaceless. `error` collects why each refused.

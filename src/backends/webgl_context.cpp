@@ -25,7 +25,7 @@ private:
 
 }  // namespace
 
-std::unique_ptr<GlContext> createWebGl2Context(const char* canvasSelector, std::string& error) {
+std::unique_ptr<GlContext> createWebGl2Context(const char* canvasSelector, std::string& error, bool floatTargets) {
     EmscriptenWebGLContextAttributes attrs;
     emscripten_webgl_init_context_attributes(&attrs);
     attrs.majorVersion = 2;
@@ -34,6 +34,10 @@ std::unique_ptr<GlContext> createWebGl2Context(const char* canvasSelector, std::
     attrs.depth = true;
     attrs.antialias = false;               // the picture is drawn into targets, as on the desktop
     attrs.preserveDrawingBuffer = true;    // the page reads the canvas back (a saved PNG, the tests)
+    // Emscripten turns on every extension it knows by default, the float
+    // render targets' (EXT_color_buffer_float, _half_float) among them;
+    // without them, only what is turned on below.
+    attrs.enableExtensionsByDefault = floatTargets;
     EMSCRIPTEN_WEBGL_CONTEXT_HANDLE ctx = emscripten_webgl_create_context(canvasSelector, &attrs);
     if (ctx <= 0) {
         error = "webgl2: this browser cannot make a WebGL 2 context";
@@ -41,7 +45,8 @@ std::unique_ptr<GlContext> createWebGl2Context(const char* canvasSelector, std::
     }
     emscripten_webgl_make_context_current(ctx);
     // Float render targets (RGBA16F, RGBA32F: the bloom lab's HDR passes).
-    emscripten_webgl_enable_extension(ctx, "EXT_color_buffer_float");
+    // Left off only to show what a browser without it says (test-web).
+    if (floatTargets) emscripten_webgl_enable_extension(ctx, "EXT_color_buffer_float");
     emscripten_webgl_enable_extension(ctx, "OES_texture_float_linear");
     return std::make_unique<WebGlContext>(ctx);
 }

@@ -28,7 +28,9 @@ bool Renderer::prepare(const Plan& plan, const Assets& assets, Diagnostics& diag
     warnUndrawable(plan, everything, diags);
     makeTargets(plan, everything, diags);
     makeScreen(plan, diags);
-    if (GLenum e = gl_->GetError(); e != GL_NO_ERROR)
+    // A GL error with no error said yet; after one (a target the driver
+    // cannot render into) it only follows from it.
+    if (GLenum e = gl_->GetError(); e != GL_NO_ERROR && diags.errorCount() == errorsBefore)
         diags.error(plan.scriptFile, {}, fmt::format("OpenGL error 0x{:04x} while loading the script", e));
     return diags.errorCount() == errorsBefore;
 }
@@ -308,8 +310,20 @@ void Renderer::makeTargets(const Plan& plan, bool everything, Diagnostics& diags
             gl_->FramebufferTexture2D(GL_FRAMEBUFFER, GLenum(GL_COLOR_ATTACHMENT0 + k), GL_TEXTURE_2D,
                                      textures_[pass.targets[k]].id, 0);
         if (depth) t->depth = attachDepth(t->width, t->height);
-        if (gl_->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-            diags.error(file, pass.loc, "the driver cannot render into these textures");
+        if (gl_->CheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            // OpenGL ES 3.0 (WebGL 2) renders into float textures only with
+            // EXT_color_buffer_float: the reason, at the texture's line.
+            const TextureDecl* floating = nullptr;
+            for (int tex : pass.targets)
+                if (!floating && isFloatFormat(plan.textures[tex].format)) floating = &plan.textures[tex];
+            if (gl_->es && floating)
+                diags.error(file, floating->loc,
+                            fmt::format("WebGL 2 renders into {} only with EXT_color_buffer_float, which this "
+                                        "browser lacks; make it RGBA8, or use a desktop browser (all have it)",
+                                        textureFormatName(floating->format)));
+            else
+                diags.error(file, pass.loc, "the driver cannot render into these textures");
+        }
         targets_.push_back(std::move(t));
     }
 }

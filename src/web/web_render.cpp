@@ -46,9 +46,13 @@ std::unique_ptr<glimmer::UniformValues> lastValues;
 
 namespace glimmer_web {
 
+// ?no-float-targets: the page's context without EXT_color_buffer_float, as
+// a browser lacking it (set before the first context is made).
+bool floatTargets = true;
+
 glimmer::GlContext* pageContext(std::string* why) {
     std::string reason;
-    if (!context) context = glimmer::createWebGl2Context("#canvas", reason);
+    if (!context) context = glimmer::createWebGl2Context("#canvas", reason, floatTargets);
     if (!context && why) *why = reason;
     return context.get();
 }
@@ -67,6 +71,10 @@ std::vector<std::string> splitSets(const std::string& text) {
 }  // namespace glimmer_web
 
 extern "C" {
+
+// The page's ?no-float-targets (tools/test-web.sh): a context without
+// EXT_color_buffer_float, as some phones' browsers have. Before anything is drawn.
+EMSCRIPTEN_KEEPALIVE void glimmer_without_float_targets() { glimmer_web::floatTargets = false; }
 
 EMSCRIPTEN_KEEPALIVE int glimmer_render(const char* path, int width, int height, const char* sets) {
     using namespace glimmer;

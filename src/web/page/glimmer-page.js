@@ -45,6 +45,8 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
   // Since the page began to load: the module fetched, compiled and started
   // (PERFORMANCE.md splits the first picture's time at this mark).
   document.body.dataset.moduleReadyMs = performance.now().toFixed(0);
+  // ?no-float-targets: behave as a browser without EXT_color_buffer_float.
+  if (query.has("no-float-targets")) glimmer._glimmer_without_float_targets();
   const FS = glimmer.FS;
   const check = glimmer.cwrap("glimmer_check", "number", ["string"]);
   const render = glimmer.cwrap("glimmer_render", "number", ["string", "number", "number", "string"]);
