@@ -325,23 +325,6 @@ std::vector<std::string> batchOutputNames(const std::vector<std::string>& script
     return out;
 }
 
-std::string jsonString(const std::string& text) {
-    std::string out = "\"";
-    for (unsigned char c : text) {
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\t': out += "\\t"; break;
-        case '\r': out += "\\r"; break;
-        default:
-            if (c < 0x20) out += fmt::format("\\u{:04x}", c);
-            else out += char(c);
-        }
-    }
-    return out + "\"";
-}
-
 std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const BatchSettings& s,
                                   const std::function<void(size_t, size_t)>& progress,
                                   const std::function<void(size_t, const BatchResult&)>& onResult) {

@@ -16,6 +16,8 @@
 #include <string>
 #include <vector>
 
+#include "util/json_string.h"  // jsonString: the report lines' strings
+
 namespace glimmer {
 
 struct BatchJob {
@@ -69,8 +71,5 @@ bool inShard(size_t index, int shard, int shards);
 // One PNG name per script, derived from its path ("class/alice/bloom.glib"
 // -> "class_alice_bloom.png"), made unique with "-2", "-3", ... in list order.
 std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts);
-
-// `text` as a JSON string literal, quotes included.
-std::string jsonString(const std::string& text);
 
 }  // namespace glimmer

@@ -6,27 +6,11 @@
 
 #include <fmt/format.h>
 
+#include "util/json_string.h"
 #include "util/numbers.h"
 
 namespace glimmer {
 namespace {
-
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (unsigned char c : text) {
-        switch (c) {
-        case '"': out += "\\\""; break;
-        case '\\': out += "\\\\"; break;
-        case '\n': out += "\\n"; break;
-        case '\t': out += "\\t"; break;
-        case '\r': out += "\\r"; break;
-        default:
-            if (c < 0x20) out += fmt::format("\\u{:04x}", c);
-            else out += char(c);
-        }
-    }
-    return out + "\"";
-}
 
 // A flat object of string and number values: all a record holds.
 bool parseFlat(const std::string& s, std::map<std::string, std::string>& out, std::string& error) {
@@ -94,9 +78,9 @@ std::string gradeRecord(const GradeRow& r) {
     return fmt::format("{{\"student\": {}, \"submission\": {}, \"script\": {}, \"verdict\": {}, \"score\": {}, "
                        "\"ssim\": {}, \"psnr\": {}, \"worst_setting\": {}, \"by_setting\": {}, \"notes\": {}, \"diagnostics\": {}, "
                        "\"seconds\": {}, \"picture\": {}, \"solution\": {}}}",
-                       quoted(r.student), quoted(r.submission), quoted(r.script), quoted(r.verdict), r.score,
-                       number(r.ssim), number(r.psnr), quoted(r.worstSetting), quoted(r.bySetting), quoted(r.notes),
-                       quoted(r.diagnostics), number(r.seconds), quoted(r.picture), quoted(r.solution));
+                       jsonString(r.student), jsonString(r.submission), jsonString(r.script), jsonString(r.verdict), r.score,
+                       number(r.ssim), number(r.psnr), jsonString(r.worstSetting), jsonString(r.bySetting), jsonString(r.notes),
+                       jsonString(r.diagnostics), number(r.seconds), jsonString(r.picture), jsonString(r.solution));
 }
 
 bool parseGradeRecord(const std::string& line, GradeRow& r, std::string& error) {
