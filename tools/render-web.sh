@@ -34,13 +34,14 @@ web="${WEB_BUILD:-$here/build-web}"
   { echo "render-web: the web build failed (tools/build-web.sh $web)" >&2; exit 1; }
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
-# The lesson (tools/web_lesson.py): the files the script can reach, as a
-# script tag the page loads from disk; prints the script's path inside it.
-inner="$(python3 "$here/tools/web_lesson.py" for-script "$script" "$work/lesson.js")" || exit 2
+# The lesson (tools/web_lesson.py): the files the script can reach, as JSON
+# data the page reads from disk (file: from a file: page); prints the
+# script's path inside it.
+inner="$(python3 "$here/tools/web_lesson.py" for-script "$script" "$work/lesson.json")" || exit 2
 page="$(realpath "$web")/src/web/index.html"
 # Query values are URL-encoded (a --set value may hold '&' or '=').
-url="$(python3 -c 'import sys, urllib.parse as u; print("file://" + sys.argv[1] + "?" + u.urlencode({"lesson": "file://" + sys.argv[2], "render": sys.argv[3], "size": sys.argv[4], "set": sys.argv[5], "frames": sys.argv[6]}))' \
-  "$page" "$work/lesson.js" "$inner" "$size" "$sets" "${frames:-0}")"
+url="$(python3 -c 'import pathlib, sys, urllib.parse as u; print(pathlib.Path(sys.argv[1]).as_uri() + "?" + u.urlencode({"lesson": pathlib.Path(sys.argv[2]).as_uri(), "render": sys.argv[3], "size": sys.argv[4], "set": sys.argv[5], "frames": sys.argv[6]}))' \
+  "$page" "$work/lesson.json" "$inner" "$size" "$sets" "${frames:-0}")"
 if [ -n "$frames" ]; then
   NODE_PATH=/usr/share/nodejs node "$here/tools/page-figures.mjs" "$url"
   exit

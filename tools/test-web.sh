@@ -10,7 +10,9 @@
 #   and with a value set as --set sets it (which must change the picture),
 #   the seed bloom and a compatibility scene through the page's translation;
 # - a packed lesson opens from disk; a picked glman folder draws; a hostile
-#   lesson is refused;
+#   lesson is refused; a lesson is data from the page's own origin, never
+#   run (a data: link, a script, another origin), and the page and the
+#   packed page keep a Content-Security-Policy;
 # - the live view's sliders, moved with the mouse, redraw only the passes
 #   they reach and give render's picture with --set; a broken shader edit
 #   shows its error and keeps the picture and the values.
@@ -258,11 +260,121 @@ tally $? "a float target without EXT_color_buffer_float must be one error at its
 
 # A lesson whose file would leave the page's /user folder is refused as a
 # whole, with the reason, and nothing is drawn.
-printf 'globalThis.glimmerLesson = {"files": {"a.glib": "", "../escape.glib": ""}};\n' > "$pictures/hostile.js"
-verdict="$(page_dom "file://$page?lesson=file://$pictures/hostile.js" --allow-file-access-from-files |
+printf '{"files": {"a.glib": "", "../escape.glib": ""}}\n' > "$pictures/hostile.json"
+verdict="$(page_dom "file://$page?lesson=file://$pictures/hostile.json" --allow-file-access-from-files |
   grep -o '<p id="verdict"[^<]*')"
 grep -q 'data-exit="2"' <<<"$verdict" && grep -Eq 'refused: the path ("|&quot;)\.\./escape\.glib("|&quot;) leaves the folder' <<<"$verdict"
 tally $? "a lesson path leaving /user was not refused: $verdict"
+
+# A link from anyone must never run code in the page (issue 30): a lesson is
+# JSON data from the page's own origin, never a script. Each payload below
+# would mark the body with data-pwned if it ran.
+# What the page at URL shows of its lesson, on one line.
+lesson_state() {  # URL [CHROMIUM FLAGS]
+  page_dom "$@" | python3 -c '
+import html, re, sys
+dom = sys.stdin.read()
+v = re.search(r"<p id=\"verdict\"([^>]*)>([^<]*)", dom)
+attrs, text = (v.group(1), html.unescape(v.group(2))) if v else ("", "")
+print("ready=%d pwned=%d refused=%d png=%d | %s" % ("data-ready=\"1\"" in dom, "data-pwned" in dom,
+      "data-lesson=\"refused\"" in attrs, "data-png=" in dom, text))'
+}
+urlq() { python3 -c 'import sys, urllib.parse as u; print(u.quote(sys.argv[1], safe=""))' "$1"; }
+payload='document.body.dataset.pwned=1;globalThis.glimmerLesson={files:{"a.glib":""}}'
+# (a) a data: URL, the script in the link itself.
+state="$(lesson_state "file://$page?lesson=$(urlq "data:text/javascript,$payload")" --allow-file-access-from-files)"
+[[ "$state" == "ready=1 pwned=0 refused=1 png=0 | refused: the lesson \"data:text/javascript,"*"is not on this disk"* ]]
+tally $? "a ?lesson=data: link must be refused and never run: $state"
+# (b) a JavaScript file beside the page, as lessons were before: read as
+# text, not JSON, refused; never run.
+printf '%s;\n' "$payload" > "$pictures/lesson-script.js"
+state="$(lesson_state "file://$page?lesson=file://$pictures/lesson-script.js" --allow-file-access-from-files)"
+[[ "$state" == "ready=1 pwned=0 refused=1 png=0 | refused: the lesson \""*"lesson-script.js\" is not a lesson: JSON"* ]]
+tally $? "a lesson that is a script must not run: $state"
+# The same over HTTP (a lesson folder written with --static, served on
+# loopback): its own lesson.json draws render's picture; a script from
+# another origin (another port) is refused and never fetched; a script of
+# its own origin is refused as not a lesson.
+python3 tools/web_lesson.py pack "$pictures/lesson" "$web/src/web" --static "$pictures/site" >/dev/null
+mkdir "$pictures/elsewhere"
+printf '%s;\n' "$payload" | tee "$pictures/elsewhere/evil.js" > "$pictures/site/evil.js"
+free_port() { python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])'; }
+site_port="$(free_port)" other_port="$(free_port)"
+python3 -m http.server --bind 127.0.0.1 --directory "$pictures/site" "$site_port" >/dev/null 2>&1 & site_pid=$!
+python3 -m http.server --bind 127.0.0.1 --directory "$pictures/elsewhere" "$other_port" >/dev/null 2>&1 & other_pid=$!
+trap 'kill "$site_pid" "$other_pid" 2>/dev/null; rm -rf "$profile" "$pictures"' EXIT
+for port in "$site_port" "$other_port"; do
+  for _ in $(seq 50); do python3 -c "import urllib.request as r; r.urlopen('http://127.0.0.1:$port/')" 2>/dev/null && break; sleep 0.1; done
+done
+site="http://127.0.0.1:$site_port/index.html"
+page_dom "$site" | python3 -c '
+import base64, re, sys
+m = re.search(r"data-png=\"data:image/png;base64,([^\"]*)\"", sys.stdin.read())
+sys.stdout.buffer.write(base64.b64decode(m.group(1)) if m else b"")' > "$pictures/static.png"
+echo "  a --static lesson folder, served over HTTP, against render"
+[ -s "$pictures/static.png" ] && same_picture "$pictures/static.png" "$pictures/packed_desktop.png"
+tally $? "the --static lesson served over HTTP did not draw render's picture"
+state="$(lesson_state "$site?lesson=$(urlq "http://127.0.0.1:$other_port/evil.js")")"
+[[ "$state" == "ready=1 pwned=0 refused=1 png=0 | refused: the lesson \"http://127.0.0.1:$other_port/evil.js\" is not on this page's own site (http://127.0.0.1:$site_port)"* ]]
+tally $? "a lesson on another origin must be refused and never run: $state"
+state="$(lesson_state "$site?lesson=evil.js")"
+[[ "$state" == "ready=1 pwned=0 refused=1 png=0 | refused: the lesson \"evil.js\" is not a lesson: JSON"* ]]
+tally $? "a script of the page's own origin named as a lesson must not run: $state"
+kill "$site_pid" "$other_pid" 2>/dev/null
+
+# (c) A packed lesson is data too: a file named '<!--<script>' and text
+# holding '</script>' cannot end or stretch its element; the page opens
+# from disk and draws.
+mkdir "$pictures/tricky"
+cp tests/data/web/lit_es.* "$pictures/tricky/"
+trick="</script><script>$payload</script><!--<script>"
+printf '# %s\n' "$trick" >> "$pictures/tricky/lit_es.glib"
+printf '%s\n' "$trick" > "$pictures/tricky/<!--<script>"
+python3 tools/web_lesson.py pack "$pictures/tricky" "$web/src/web" --html "$pictures/tricky.html" >/dev/null
+page_dom "file://$pictures/tricky.html" > "$pictures/tricky.dom"
+python3 -c '
+import base64, re, sys
+m = re.search(r"data-png=\"data:image/png;base64,([^\"]*)\"", open(sys.argv[1]).read())
+sys.stdout.buffer.write(base64.b64decode(m.group(1)) if m else b"")' "$pictures/tricky.dom" > "$pictures/tricky.png"
+"$g" -q render "$pictures/tricky/lit_es.glib" --size 512x512 -o "$pictures/tricky_desktop.png"
+echo "  a packed lesson with a file named '<!--<script>' holding '</script>', against render"
+! grep -q data-pwned "$pictures/tricky.dom" && [ -s "$pictures/tricky.png" ] &&
+  same_picture "$pictures/tricky.png" "$pictures/tricky_desktop.png"
+tally $? "the packed lesson with '<!--<script>' did not open and draw (or its text ran)"
+
+# (d) The Content-Security-Policy: in the page and the packed page, no
+# inline script but by hash, no eval but WebAssembly's, no plugin, no
+# <base>; the packed page names no script file and hashes each inline one.
+python3 - "$page" "$pictures/tricky.html" <<'EOF'
+import base64, hashlib, re, sys
+ok = True
+for path in sys.argv[1:]:
+    text = open(path, encoding="utf-8").read()
+    m = re.search(r'<meta http-equiv="Content-Security-Policy" content="([^"]*)">', text)
+    policy = {d.split()[0]: d.split()[1:] for d in m.group(1).split(";") if d.split()} if m else {}
+    script = policy.get("script-src", [])
+    good = ("'wasm-unsafe-eval'" in script and "'unsafe-inline'" not in script and "'unsafe-eval'" not in script
+            and not any(s in ("*", "data:", "blob:", "http:", "https:") for s in script)
+            and policy.get("object-src") == ["'none'"] and policy.get("base-uri") == ["'none'"])
+    if path.endswith("tricky.html"):
+        inline = re.findall(r"<script>(.*?)</script>", text, re.S)
+        hashes = {"'sha256-" + base64.b64encode(hashlib.sha256(c.encode()).digest()).decode() + "'" for c in inline}
+        good = good and "'self'" not in script and len(inline) == 6 and hashes <= set(script) and "<script src=" not in text
+    else:
+        good = good and "<script>" not in text
+    if not good:
+        print(f"    {path}: {m.group(0) if m else 'no Content-Security-Policy'}")
+        ok = False
+sys.exit(0 if ok else 1)
+EOF
+tally $? "the page or the packed page lacks the Content-Security-Policy"
+# ...and the browser keeps to it: an inline script added to the packed
+# page (no hash) does not run, and the page still opens and draws.
+python3 -c 'import sys; head, tail = open(sys.argv[1]).read().rsplit("</body>", 1)
+open(sys.argv[2], "w").write(head + "<script>document.body.dataset.pwned=1</script>\n</body>" + tail)' "$pictures/tricky.html" "$pictures/injected.html"
+state="$(lesson_state "file://$pictures/injected.html")"
+[[ "$state" == "ready=1 pwned=0 refused=0 png=1 | lit_es.glib: drawn" ]]
+tally $? "an inline script without its hash ran in the packed page: $state"
 
 echo "web: $passed passed, $failed failed"
 [ "$failed" -eq 0 ]

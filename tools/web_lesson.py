@@ -1,31 +1,42 @@
 #!/usr/bin/env python3
 """A lesson for the browser page: files the page mounts at /user.
 
-A lesson is a script tag that sets globalThis.glimmerLesson to
-{"files": {"relative/path": "base64", ...}}; the page (src/web/page/
-glimmer-page.js) writes those files into its file system, refusing a path
-that leaves the folder. A script tag, not JSON fetched, because a page
-opened from disk may load scripts but not fetch files.
+A lesson is DATA, never code: JSON {"files": {"relative/path": "base64",
+...}}. The page (src/web/page/glimmer-page.js) parses it with JSON.parse,
+checks it and writes the files into its file system, refusing a path that
+leaves the folder; it loads a lesson only from its own origin (from disk,
+only from disk), so a link from anyone can never run code in the page.
 
-  web_lesson.py for-script SCRIPT OUT.js
+  web_lesson.py for-script SCRIPT OUT.json
       the files a script can reach: its folder and the sibling shaders/ and
       textures/ folders Glimmer looks in (src/plan/resolve.cpp); prints the
-      script's path inside the lesson. tools/render-web.sh uses it.
+      script's path inside the lesson. tools/render-web.sh uses it
+      (index.html?lesson=file:///.../OUT.json).
   web_lesson.py pack FOLDER WEB_DIR --html OUT.html
       one self-contained page: the module, its WebAssembly, the page and
       the folder's files in one HTML file that opens from disk, no server.
+      The lesson and the WebAssembly are data blocks; each inline script is
+      allowed by its sha256 in the page's Content-Security-Policy.
   web_lesson.py pack FOLDER WEB_DIR --static DIR
       the same as a folder for a web server: the page, the module and
-      lesson.js side by side.
-Sizes are bounded before anything is read whole: 64 MiB of lesson files.
+      lesson.json side by side.
+Only regular files are taken: a symbolic link or a hard link (which may be
+a file outside the folder) is skipped with a message, as is a name that is
+not UTF-8. Sizes are bounded before anything is read whole: 64 MiB of
+lesson files.
 """
 import base64
-import re
+import hashlib
 import json
 import os
+import re
+import stat
 import sys
 
 LIMIT = 64 * 1024 * 1024
+# The page's own policy (src/web/page/index.html); the packed page's is this
+# with the inline scripts' hashes in place of 'self'.
+CSP_META = re.compile(r'<meta http-equiv="Content-Security-Policy" content="([^"]*)">')
 
 
 def fail(message):
@@ -33,38 +44,92 @@ def fail(message):
     sys.exit(2)
 
 
+def skip(path, why):
+    sys.stderr.write(f"web_lesson: skipped {path}: {why}\n")
+
+
+def inside(path, root):
+    return os.path.commonpath([path, root]) == root
+
+
 def collect(root, tops):
-    """Every plain file below each of `tops`, as {path relative to root: bytes}."""
+    """Every regular file below each of `tops`, as {path relative to root: bytes}."""
+    root = os.path.realpath(root)
     files, total = {}, 0
     for top in tops:
+        if os.path.realpath(top) != root and (os.path.islink(top) or not inside(os.path.realpath(top), root)):
+            skip(top, "a symbolic link, or outside the lesson's folder")
+            continue
+        top = os.path.realpath(top)
         for dirpath, dirnames, filenames in os.walk(top):
-            dirnames[:] = sorted(d for d in dirnames if not d.startswith("."))
+            # os.walk lists links to folders without entering them: say so.
+            for d in [d for d in dirnames if os.path.islink(os.path.join(dirpath, d))]:
+                skip(os.path.join(dirpath, d), "a symbolic link (it may lead outside the folder)")
+            dirnames[:] = sorted(d for d in dirnames
+                                 if not d.startswith(".") and not os.path.islink(os.path.join(dirpath, d)))
             for name in sorted(filenames):
                 path = os.path.join(dirpath, name)
-                if name.startswith(".") or os.path.islink(path) or not os.path.isfile(path):
+                if name.startswith("."):
                     continue
-                total += os.path.getsize(path)
-                if total > LIMIT:
-                    fail(f"{top}: more than {LIMIT >> 20} MiB of files; a lesson holds at most that")
-                with open(path, "rb") as f:
-                    files[os.path.relpath(path, root)] = f.read()
+                if os.path.islink(path):
+                    skip(path, "a symbolic link (it may lead outside the folder)")
+                    continue
+                rel = os.path.relpath(path, root)
+                try:
+                    rel.encode("utf-8")
+                except UnicodeEncodeError:
+                    skip(path, "its name is not UTF-8")
+                    continue
+                if rel.split(os.sep)[0] == ".." or os.path.isabs(rel) or not inside(os.path.realpath(path), root):
+                    skip(path, "outside the lesson's folder")
+                    continue
+                # Opened without following a link, then checked on the open
+                # descriptor: what is read is what was checked.
+                try:
+                    fd = os.open(path, os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK)
+                except OSError as e:
+                    skip(path, "a symbolic link" if os.path.islink(path) else e.strerror)
+                    continue
+                with os.fdopen(fd, "rb") as f:
+                    st = os.fstat(fd)
+                    if not stat.S_ISREG(st.st_mode):
+                        skip(path, "not a regular file")
+                        continue
+                    if st.st_nlink > 1:
+                        skip(path, f"a hard link ({st.st_nlink} names; one may be outside the folder)")
+                        continue
+                    total += st.st_size
+                    if total > LIMIT:
+                        fail(f"{top}: more than {LIMIT >> 20} MiB of files; a lesson holds at most that")
+                    data = f.read(st.st_size + 1)
+                    if len(data) > st.st_size:
+                        fail(f"{path} grew while it was read")
+                files[rel] = data
     return files
 
 
-def lesson_js(files):
+def lesson_json(files):
+    """The lesson as JSON text, ASCII only, with every '<' written \\u003c:
+    inside an HTML <script> element nothing in a file's name or text can
+    end it ("</script>") or change how it ends ("<!--<script>")."""
     encoded = {path: base64.b64encode(data).decode() for path, data in files.items()}
-    return "globalThis.glimmerLesson = " + json.dumps({"files": encoded}) + ";\n"
+    return json.dumps({"files": encoded}, ensure_ascii=True).replace("<", "\\u003c")
 
 
 def for_script(script, out):
-    script = os.path.abspath(script)
-    folder = os.path.dirname(script)
+    # The folder as it really is (paths below are made relative to it).
+    folder = os.path.realpath(os.path.dirname(os.path.abspath(script)))
+    script = os.path.join(folder, os.path.basename(script))
     parent = os.path.dirname(folder)
     siblings = [os.path.join(parent, d) for d in ("shaders", "textures") if os.path.isdir(os.path.join(parent, d))]
     root = parent if siblings else folder
     with open(out, "w") as f:
-        f.write(lesson_js(collect(root, [folder] + siblings)))
+        f.write(lesson_json(collect(root, [folder] + siblings)))
     print(os.path.relpath(script, root))
+
+
+def csp_hash(code):
+    return "'sha256-" + base64.b64encode(hashlib.sha256(code.encode("utf-8")).digest()).decode() + "'"
 
 
 def pack(folder, web, html_out=None, static_dir=None):
@@ -85,34 +150,53 @@ def pack(folder, web, html_out=None, static_dir=None):
     parts = {name: read(name) for pair in named for name in pair if name}
     parts["glimmer-web.wasm"] = read("glimmer-web.wasm")
     tag = '<script src="glimmer-web.js"></script>'
-    if tag not in page:
-        fail(f"{web}/index.html has no {tag}: the page and this packer disagree")
+    if tag not in page or not CSP_META.search(page):
+        fail(f"{web}/index.html has no {tag} or no Content-Security-Policy: the page and this packer disagree")
     if static_dir:
         for name, data in parts.items():
             os.makedirs(os.path.dirname(os.path.join(static_dir, name)), exist_ok=True)
             with open(os.path.join(static_dir, name), "wb") as f:
                 f.write(data)
-        with open(os.path.join(static_dir, "lesson.js"), "w") as f:
-            f.write(lesson_js(files))
+        with open(os.path.join(static_dir, "lesson.json"), "w") as f:
+            f.write(lesson_json(files))
+        # The page loads the lesson beside it, as data (glimmer-page.js).
         with open(os.path.join(static_dir, "index.html"), "w") as f:
-            f.write(page.replace(tag, '<script src="lesson.js"></script>\n' + tag))
+            f.write(page.replace("</head>", '<meta name="glimmer-lesson" content="lesson.json">\n</head>', 1))
         print(f"wrote {static_dir}/ ({len(files)} lesson files)")
     if html_out:
+        hashes = []
         def inline(code):
-            # A script element ends at the first "</script": keep it out of the code.
-            return "<script>" + code.replace("</script", "<\\/script") + "</script>"
+            # The HTML parser turns CR and CRLF into LF: hash what it will see.
+            code = code.replace("\r\n", "\n").replace("\r", "\n")
+            # A script element ends at the first "</script", and "<!--" can
+            # change where: keep both out of the code.
+            code = code.replace("</script", "<\\/script")
+            if "<!--" in code or "\0" in code:
+                fail("a script of the page holds '<!--' or a NUL, which an inline script cannot carry")
+            hashes.append(csp_hash(code))
+            return "<script>" + code + "</script>"
         wasm = base64.b64encode(parts["glimmer-web.wasm"]).decode()
         for script, sheet in named:
             if sheet:
                 css = parts[sheet].decode().replace("</style", "<\\/style")
                 page = page.replace(f'<link rel="stylesheet" href="{sheet}">', "<style>" + css + "</style>")
             elif script == "glimmer-web.js":
-                page = page.replace(tag, inline(lesson_js(files)) + "\n"
-                                    + inline(f'globalThis.glimmerWasm = "{wasm}";') + "\n"
+                # Data blocks (not JavaScript): never run, so they need no hash.
+                page = page.replace(tag, '<script type="application/json" id="glimmer-lesson">' + lesson_json(files)
+                                    + "</script>\n"
+                                    + '<script type="application/octet-stream" id="glimmer-wasm">' + wasm + "</script>\n"
                                     + inline(parts["glimmer-web.js"].decode()))
             else:
                 page = page.replace(f'<script src="{script}"></script>', inline(parts[script].decode()))
-        with open(html_out, "w") as f:
+        policy = CSP_META.search(page).group(1)
+        sources = policy.split(";")
+        for i, directive in enumerate(sources):
+            words = directive.split()
+            if words and words[0] == "script-src":
+                # No script from anywhere (the page is one file): only these.
+                sources[i] = " ".join(["script-src"] + [w for w in words[1:] if w != "'self'"] + hashes)
+        page = CSP_META.sub(lambda m: m.group(0).replace(policy, ";".join(sources)), page, count=1)
+        with open(html_out, "w", newline="") as f:
             f.write(page)
         print(f"wrote {html_out} ({len(files)} lesson files, {os.path.getsize(html_out)} bytes)")
 

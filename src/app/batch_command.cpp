@@ -2,9 +2,15 @@
 // driver/batch.h (a pool of workers that each keep a GL context); this file
 // reads the list, shards it, and writes the report.
 #include <charconv>
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
+
 #include <fstream>
 #include <iostream>
+
+#include <fcntl.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
@@ -68,6 +74,48 @@ void addBatchCommand(CLI::App& app, BatchOptions& o) {
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
 }
 
+namespace {
+
+// Two batches writing into one -o folder at once would overwrite each
+// other's pictures and both report success (issue 30): the second is
+// refused. A POSIX record lock belongs to this process alone (forked
+// workers do not inherit it) and goes with it however it ends, so a killed
+// batch never leaves the folder locked (only, harmlessly, the lock file).
+// A batch that ends normally removes the file.
+class OutputFolderLock {
+public:
+    ~OutputFolderLock() {
+        if (fd_ < 0) return;
+        ::unlink(path_.c_str());
+        ::close(fd_);
+    }
+    bool lock(const std::string& dir, std::string& why) {
+        path_ = (std::filesystem::path(dir) / ".glimmer-batch.lock").string();
+        fd_ = ::open(path_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+        if (fd_ < 0) {
+            why = fmt::format("cannot open {}: {}", path_, std::strerror(errno));
+            return false;
+        }
+        struct flock whole{};
+        whole.l_type = F_WRLCK;
+        whole.l_whence = SEEK_SET;  // l_start 0, l_len 0: the whole file
+        if (::fcntl(fd_, F_SETLK, &whole) != 0) {
+            ::close(fd_);
+            fd_ = -1;
+            why = "another glimmer batch is writing into this folder; wait for it to finish, or give each batch its "
+                  "own -o";
+            return false;
+        }
+        return true;
+    }
+
+private:
+    int fd_ = -1;
+    std::string path_;
+};
+
+}  // namespace
+
 int runBatch(const BatchOptions& o) {
     std::vector<std::string> scripts = o.scripts;
     if (!o.list.empty()) {
@@ -120,6 +168,11 @@ int runBatch(const BatchOptions& o) {
     std::filesystem::create_directories(o.outputDir, ec);
     if (!std::filesystem::is_directory(o.outputDir)) {
         std::cerr << fmt::format("glimmer: error: -o {}: cannot make this folder\n", o.outputDir);
+        return kExitUsage;
+    }
+    OutputFolderLock folderLock;
+    if (std::string why; !folderLock.lock(o.outputDir, why)) {
+        std::cerr << fmt::format("glimmer: error: -o {}: {}\n", o.outputDir, why);
         return kExitUsage;
     }
     settings.backend = o.backend;

@@ -6,6 +6,7 @@
 #include <fstream>
 
 #include "app/grade_batch.h"
+#include "util/write_file.h"
 #include "grade/grading.h"
 #include "image/image.h"
 #include "image/png_stream.h"
@@ -33,15 +34,8 @@ RowPictures rowPictures(const GradeRow& row, const fs::path& dir) {
 }  // namespace
 
 bool writeWhole(const fs::path& path, const std::string& text) {
-    const fs::path tmp = path.string() + ".tmp";
-    {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        out << text;
-        if (!out) return false;
-    }
-    std::error_code ec;
-    fs::rename(tmp, path, ec);
-    return !ec;
+    std::string error;
+    return writeBytesReplacing(path.string(), text.data(), text.size(), error);
 }
 
 void writeReport(const fs::path& dir, const ReportHeader& header, std::vector<GradeRow> rows,

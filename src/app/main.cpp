@@ -1,6 +1,8 @@
 // glimmer: run GLIB scripts. `glimmer render` draws a script headless to a
 // PNG; `glimmer check` finds every problem without drawing; `glimmer view`
 // (or plain `glimmer script.glib`) opens the live window.
+#include <csignal>
+#include <functional>
 #include <iostream>
 #include <new>
 #include <stdexcept>
@@ -10,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
+#include "driver/child_guard.h"
 #include "driver/watchdog.h"
 #include "app/help_text.h"
 #include "lang/diagnostics.h"
@@ -61,13 +64,16 @@ int run(int argc, char** argv) {
         return code == 0 ? kExitOk : kExitUsage;
     }
     if (auto code = applyGlobalOptions(globals)) return *code;
-    if (app.got_subcommand("render"))
-        return runWithTimeout(render.timeoutSeconds, render.script, [&] { return runRender(render); });
-    if (app.got_subcommand("check"))
-        return runWithTimeout(check.timeoutSeconds, check.script, [&] { return runCheck(check); });
+    // Under --sandbox the script is untrusted: its GL work runs in a child
+    // whose address space is bounded (driver/child_guard.h).
+    auto guarded = [](const CommonOptions& o, const std::function<int()>& work) {
+        return runWithTimeout(o.timeoutSeconds, o.script, work,
+                              o.sandbox ? sandboxAddressSpaceBytes(o.maxMemoryMiB) : 0);
+    };
+    if (app.got_subcommand("render")) return guarded(render, [&] { return runRender(render); });
+    if (app.got_subcommand("check")) return guarded(check, [&] { return runCheck(check); });
     if (app.got_subcommand("view")) return runView(view);
-    if (app.got_subcommand("sheet"))
-        return runWithTimeout(sheet.timeoutSeconds, sheet.script, [&] { return runSheet(sheet); });
+    if (app.got_subcommand("sheet")) return guarded(sheet, [&] { return runSheet(sheet); });
     if (app.got_subcommand("tradeoff")) return runTradeoff(tradeoff);
     if (app.got_subcommand("batch")) return runBatch(batch);
     if (app.got_subcommand("batch-merge")) return runBatchMerge(batchMerge);
@@ -79,6 +85,9 @@ int run(int argc, char** argv) {
 // Nothing a script does may abort the process (exit 134): whatever escapes a
 // command is reported, and the exit code stays 1 (script) as documented.
 int main(int argc, char** argv) {
+    // A write past a file-size limit fails with EFBIG and is reported, as a
+    // full disk is, instead of killing the process (util/write_file.h).
+    std::signal(SIGXFSZ, SIG_IGN);
     try {
         return run(argc, argv);
     } catch (const std::bad_alloc&) {

@@ -8,6 +8,7 @@
 
 #include "driver/console.h"
 #include "driver/numeric_health.h"
+#include "driver/output_guard.h"
 #include "driver/session.h"
 #include "image/animation.h"
 #include "image/image.h"
@@ -87,6 +88,18 @@ int runRender(const RenderOptions& o) {
     for (const auto& d : dumps) {
         if (!s.loaded.plan.finalUnits.count(d.unit)) {
             std::cerr << fmt::format("glimmer: error: --dump {}: no texture on unit {}\n", d.unit, d.unit);
+            return kExitUsage;
+        }
+    }
+
+    // Never over one of the script's own files (driver/output_guard.h).
+    std::vector<std::pair<std::string, std::string>> outputs;  // option, file
+    if (out.kind == Output::Kind::Png || out.kind == Output::Kind::Webp) outputs.push_back({"-o", o.output});
+    for (const auto& d : dumps) outputs.push_back({fmt::format("--dump {}", d.unit), d.file});
+    for (const auto& [option, file] : outputs) {
+        if (std::string input = inputOverwrittenBy(s.loaded.plan, file); !input.empty()) {
+            std::cerr << fmt::format("glimmer: error: {} {}: that is '{}', which the script reads; write the picture "
+                                     "under another name\n", option, file, input);
             return kExitUsage;
         }
     }

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
+#include "driver/output_guard.h"
 #include "driver/session.h"
 #include "app/sheet_drawing.h"
 #include "driver/console.h"
@@ -46,6 +47,11 @@ int runSheet(const SheetOptions& o) {
     Session s;
     if (auto code = openSession(common, {}, false, s)) return *code;
     const Plan& plan = s.loaded.plan;
+    if (std::string input = inputOverwrittenBy(plan, o.output); !input.empty()) {  // driver/output_guard.h
+        std::cerr << fmt::format("glimmer: error: -o {}: that is '{}', which the script reads; write the sheet under "
+                                 "another name\n", o.output, input);
+        return kExitUsage;
+    }
 
     // Every value must be valid before anything is drawn.
     const SheetAxis& cols = axes[0];

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>
+
+#include "util/write_file.h"
 
 namespace glimmer {
 namespace {
@@ -54,7 +56,7 @@ FastestVerdict printTradeoffVerdict(const std::vector<TradeoffRow>& rows, int re
 }
 
 void writeTradeoffCsv(const std::string& path, const std::vector<TradeoffRow>& rows, double matchSigma) {
-    std::ofstream csv(path);
+    std::ostringstream csv;  // written whole at the end (util/write_file.h)
     csv << "method,family,taps,passes,ms,megabytes,sigma,num_rmse,num_psnr,num_max,num_over_one_step,model_rmse,"
            "model_psnr,model_max,model_over_one_step,nan,inf,negative,above_65504,ms_min,ms_max,runs,target_sigma,"
            "floor_ms\n";
@@ -67,11 +69,13 @@ void writeTradeoffCsv(const std::string& path, const std::vector<TradeoffRow>& r
                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
                            r.health.above65504, r.time.min, r.time.max, r.time.runs,
                            matchSigma > 0 ? fmt::format("{:g}", matchSigma) : "", r.floorMs);
+    std::string error, text = csv.str();
+    writeBytesReplacing(path, text.data(), text.size(), error);
 }
 
 void writeTradeoffJson(const std::string& path, const std::string& title, const std::vector<TradeoffRow>& rows,
                        const FastestVerdict& verdict, double matchSigma) {
-    std::ofstream json(path);
+    std::ostringstream json;
     json << "{\n  \"title\": \"" << title << "\",\n  \"comparison\": "
          << (matchSigma > 0 ? fmt::format("{{\"matched_sigma\": {}}}", jsonNumber(matchSigma)) : "\"natural width\"")
          << ",\n  \"fastest_within_40db\": {\"clear_winner\": " << (verdict.clearWinner() ? "true" : "false")
@@ -95,6 +99,8 @@ void writeTradeoffJson(const std::string& path, const std::string& title, const 
                             r.health.above65504, i + 1 < rows.size() ? "," : "");
     }
     json << "  ]\n}\n";
+    std::string error, text = json.str();
+    writeBytesReplacing(path, text.data(), text.size(), error);
 }
 
 }  // namespace glimmer

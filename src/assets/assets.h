@@ -44,7 +44,9 @@ struct Assets {
 bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTexts& sources, Assets& out);
 
 // The vertex arrays of one shape command (reads the OBJ file for Obj,
-// ObjAdj and WireObj). False with `error` when it cannot be built.
-bool buildMesh(const MeshDecl& m, Mesh& mesh, std::string& error);
+// ObjAdj and WireObj). False with `error` when it cannot be built. With a
+// `budget` (--max-memory), an OBJ that would take the `used` bytes past it
+// is refused with the budget's message before it is parsed.
+bool buildMesh(const MeshDecl& m, Mesh& mesh, std::string& error, std::uint64_t used = 0, std::uint64_t budget = 0);
 
 }  // namespace glimmer

@@ -3,6 +3,7 @@
 #include <map>
 
 #include "assets/assets.h"
+#include "util/read_file.h"
 #include "geometry/shape_registry.h"
 
 namespace glimmer {
@@ -18,7 +19,7 @@ void meshPoints(const MeshDecl& m, std::vector<glm::vec3>& out) {
 
 // The shape's row (geometry/shape_registry.h) builds it; the plan has
 // already filled in the defaults.
-bool buildMesh(const MeshDecl& m, Mesh& mesh, std::string& error) {
+bool buildMesh(const MeshDecl& m, Mesh& mesh, std::string& error, std::uint64_t used, std::uint64_t budget) {
     const ShapeRule* rule = findShapeRule(commandName(m.shape));
     if (!rule) {
         error = "no mesh for this command";
@@ -29,9 +30,20 @@ bool buildMesh(const MeshDecl& m, Mesh& mesh, std::string& error) {
         mesh = rule->wireOf.empty() ? rule->build(m.params) : makeWire(rule->build(m.params));
         return true;
     case ShapeRule::Source::ObjFile: {
-        if (m.shape == CommandKind::Obj) return loadObj(m.path, mesh, error);
+        // Counted before tinyobjloader allocates anything: a model has no
+        // bound but the file's size (geometry/mesh.h's countObj).
+        std::string text, why;
+        if (!readRegularFile(m.path, kMaxInputFileBytes, text, why)) {
+            error = "cannot load OBJ '" + m.path + "': it " + why;
+            return false;
+        }
+        if (std::uint64_t need = used + text.size() + countObj(text).bytes; budget > 0 && need > budget) {
+            error = overMemoryBudget(need, budget);
+            return false;
+        }
+        if (m.shape == CommandKind::Obj) return loadObjText(text, m.path, mesh, error);
         Mesh solid;
-        if (!loadObj(m.path, solid, error)) return false;
+        if (!loadObjText(text, m.path, solid, error)) return false;
         mesh = m.shape == CommandKind::ObjAdj ? makeObjAdjacency(solid) : makeWire(solid);
         return true;
     }

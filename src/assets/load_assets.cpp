@@ -58,6 +58,7 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
     // Image files count against --max-memory with what the plan declares;
     // each was already bounded by the image limits before it was decoded.
     std::uint64_t total = plannedBytes(plan);
+    bool overBudget = false;
     for (size_t i = 0; i < plan.textures.size(); ++i) {
         if (!out.used.textures[i]) continue;
         const TextureDecl& t = plan.textures[i];
@@ -68,17 +69,27 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
         }
         total += decodedBytes(out.textures[i]);
         if (plan.maxMemoryBytes > 0 && total > plan.maxMemoryBytes) {
-            reportOverBudget(plan, t.loc, total, diags);
+            if (!overBudget) reportOverBudget(plan, t.loc, total, diags);  // the first line past it
+            overBudget = true;
             out.textures[i] = {};
         }
     }
-    for (size_t i = 0; i < plan.meshes.size(); ++i) {
+    for (size_t i = 0; i < plan.meshes.size() && !overBudget; ++i) {
         if (!out.used.meshes[i]) continue;
         Mesh mesh;
         std::string why;
         if (needsStandIn(plan.meshes[i])) out.meshes[i] = standInMesh(plan.meshes[i]);  // --stand-ins
-        else if (buildMesh(plan.meshes[i], mesh, why)) out.meshes[i] = std::move(mesh);
+        else if (buildMesh(plan.meshes[i], mesh, why, total, plan.maxMemoryBytes)) out.meshes[i] = std::move(mesh);
         else diags.error(file, plan.meshes[i].loc, why);
+        // A shape counts once built: the counts bound each (geometry/shape_registry.h),
+        // so the budget is passed by at most one shape, and never kept past.
+        if (!out.meshes[i]) continue;
+        total += meshBytes(*out.meshes[i]);
+        if (plan.maxMemoryBytes > 0 && total > plan.maxMemoryBytes) {
+            reportOverBudget(plan, plan.meshes[i].loc, total, diags);
+            out.meshes[i].reset();
+            overBudget = true;
+        }
     }
     for (size_t i = 0; i < plan.programs.size(); ++i) {
         if (!out.used.programs[i]) continue;

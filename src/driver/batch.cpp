@@ -1,4 +1,5 @@
 #include "driver/batch.h"
+#include "driver/child_guard.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -266,8 +267,12 @@ Worker spawn(const std::vector<BatchJob>& jobs, const BatchSettings& s, const st
         return w;
     }
     std::fflush(nullptr);
+    const pid_t parent = ::getpid();
     pid_t pid = ::fork();
     if (pid == 0) {
+        // Dies with the batch; under --sandbox (grading's default) its
+        // address space is bounded too (driver/child_guard.h).
+        guardChild(parent, s.sandbox ? sandboxAddressSpaceBytes(s.maxMemoryMiB) : 0);
         ::close(down[1]);
         ::close(up[0]);
         for (const Worker& o : others)

@@ -35,7 +35,7 @@ bool loadScript(const std::string& path, const PlanOptions& options, Diagnostics
         return false;
     }
     out.sources.add(name, text);
-    out.script = parseScript(name, text, diags);
+    out.script = parseScript(name, text, diags, options.maxMemoryBytes);
     out.plan = buildPlan(out.script, options, diags);
     for (auto& p : out.plan.programs)  // the script's own words about each pass, for the viewer
         if (std::string note = commentNoteAbove(text, p.loc.line); !note.empty())

@@ -12,6 +12,7 @@
 
 #include <fmt/format.h>
 
+#include "driver/child_guard.h"
 #include "plan/limits.h"
 #include "util/read_file.h"
 
@@ -46,13 +47,16 @@ void reportPassStart(SourceLoc loc) {
     (void)!::write(gProgressFd, &r, sizeof r);
 }
 
-int runWithTimeout(double seconds, const std::string& script, const std::function<int()>& work) {
-    if (!(seconds > 0)) return work();
+int runWithTimeout(double seconds, const std::string& script, const std::function<int()>& work,
+                   std::uint64_t addressSpaceBytes) {
+    if (!(seconds > 0) && addressSpaceBytes == 0) return work();
+    if (!(seconds > 0)) seconds = 1e9;  // only the address space is bounded: wait as long as it takes
     int fds[2];
     if (::pipe(fds) != 0) return work();
     std::cout.flush();
     std::cerr.flush();
     std::fflush(nullptr);
+    const pid_t parent = ::getpid();
     pid_t pid = ::fork();
     if (pid < 0) {
         ::close(fds[0]);
@@ -61,6 +65,7 @@ int runWithTimeout(double seconds, const std::string& script, const std::functio
         return 1;
     }
     if (pid == 0) {
+        guardChild(parent, addressSpaceBytes);
         ::close(fds[0]);
         gProgressFd = fds[1];
         int code = work();
@@ -104,8 +109,13 @@ int runWithTimeout(double seconds, const std::string& script, const std::functio
     }
     ::close(fds[0]);
     if (WIFEXITED(status)) return WEXITSTATUS(status);
-    std::cerr << fmt::format("{}: error: the renderer was stopped by signal {} ({})\n", script, WTERMSIG(status),
-                             strsignal(WTERMSIG(status)));
+    std::cerr << fmt::format("{}: error: the renderer was stopped by signal {} ({}){}\n", script, WTERMSIG(status),
+                             strsignal(WTERMSIG(status)),
+                             addressSpaceBytes > 0
+                                 ? fmt::format("; under --sandbox it may map at most {} MiB (--max-memory plus {} MiB "
+                                               "for the driver): the script or its shaders may need more",
+                                               addressSpaceBytes >> 20, kDriverHeadroomMiB)
+                                 : "");
     return 1;
 }
 

@@ -9,6 +9,7 @@
 // context; the child inherits stdin, stdout and stderr and writes every
 // output itself.
 #pragma once
+#include <cstdint>
 #include <functional>
 #include <string>
 
@@ -17,10 +18,14 @@
 namespace glimmer {
 
 // Runs `work` (returns an exit code) in a child process and waits at most
-// `seconds` (0: no limit, `work` runs here). On time-out the child is killed
-// and the message names `script` and the line of the pass that was drawing;
-// a child killed by a signal is reported too. Returns the exit code.
-int runWithTimeout(double seconds, const std::string& script, const std::function<int()>& work);
+// `seconds` (0: no limit). On time-out the child is killed and the message
+// names `script` and the line of the pass that was drawing; a child killed
+// by a signal is reported too. Returns the exit code. The child dies with
+// this process and, with `addressSpaceBytes` > 0 (--sandbox), may map at
+// most that much (driver/child_guard.h). With neither a time nor an address
+// limit, `work` runs here.
+int runWithTimeout(double seconds, const std::string& script, const std::function<int()>& work,
+                   std::uint64_t addressSpaceBytes = 0);
 
 // In the child: reports that the pass written at `loc` starts. Does nothing
 // outside runWithTimeout.

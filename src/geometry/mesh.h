@@ -178,5 +178,29 @@ Mesh makeObjAdjacency(const Mesh& triangles);
 // (with tinyobjloader's reason and the path) on failure or when there are no
 // faces; `out` is only written on success.
 bool loadObj(const std::string& path, Mesh& out, std::string& error);
+// The same from the file's text (already read and bounded).
+bool loadObjText(const std::string& text, const std::string& path, Mesh& out, std::string& error);
+
+// What an OBJ asks for, counted in one pass over its text before
+// tinyobjloader sees it (issue 30: a 100 MB file of faces took 4.1 GB, one
+// face of a million corners never finished being cut into triangles).
+struct ObjCounts {
+    std::uint64_t positions = 0, texcoords = 0, normals = 0;  // v, vt, vn lines
+    std::uint64_t triangles = 0;      // after each face is cut into corners - 2
+    std::uint64_t cuttingWork = 0;    // the sum of corners^2 over faces of 5 corners or more
+    std::uint64_t mostCorners = 0;    // of one face
+    int mostCornersLine = 0;
+    std::uint64_t bytes = 0;          // an upper estimate of what loading takes (tinyobjloader and the Mesh)
+};
+ObjCounts countObj(const std::string& text);
+// tinyobjloader cuts a polygon into triangles in time that grows with the
+// square of its corners: each face may have at most kMaxObjFaceCorners, and
+// all faces of five corners or more together at most kMaxObjCuttingWork
+// corners squared (about a second on one core).
+constexpr std::uint64_t kMaxObjFaceCorners = 1000;
+constexpr std::uint64_t kMaxObjCuttingWork = 100'000'000;
+
+// The bytes a built mesh takes: its arrays on the CPU and their copy on the GPU.
+std::uint64_t meshBytes(const Mesh& m);
 
 }  // namespace glimmer

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <map>
 
+#include <fmt/format.h>
 #include <tiny_obj_loader.h>
 
 #include "geometry/mesh.h"
@@ -18,11 +19,52 @@ std::string trimmed(std::string s) {
 
 }  // namespace
 
+std::uint64_t meshBytes(const Mesh& m) {
+    return 2 * (std::uint64_t(m.vertices.size()) * sizeof(MeshVertex) + std::uint64_t(m.indices.size()) * 4);
+}
+
+ObjCounts countObj(const std::string& text) {
+    ObjCounts c;
+    std::uint64_t corners = 0;
+    int lineNo = 0;
+    size_t at = 0;
+    while (at < text.size()) {
+        ++lineNo;
+        size_t end = text.find('\n', at);
+        if (end == std::string::npos) end = text.size();
+        size_t p = at;
+        while (p < end && (text[p] == ' ' || text[p] == '\t')) ++p;
+        auto word = [&](const char* w, size_t n) {
+            return end - p > n && text.compare(p, n, w) == 0 && (text[p + n] == ' ' || text[p + n] == '\t');
+        };
+        if (word("v", 1)) ++c.positions;
+        else if (word("vt", 2)) ++c.texcoords;
+        else if (word("vn", 2)) ++c.normals;
+        else if (word("f", 1)) {
+            std::uint64_t n = 0;
+            for (size_t q = p + 1; q < end;) {
+                while (q < end && (text[q] == ' ' || text[q] == '\t' || text[q] == '\r')) ++q;
+                if (q >= end) break;
+                ++n;
+                while (q < end && text[q] != ' ' && text[q] != '\t' && text[q] != '\r') ++q;
+            }
+            corners += n;
+            if (n >= 3) c.triangles += n - 2;
+            if (n >= 5) c.cuttingWork += n * n;
+            if (n > c.mostCorners) c.mostCorners = n, c.mostCornersLine = lineNo;
+        }
+        at = end + 1;
+    }
+    // tinyobjloader: 3 floats a v (and as many weights), 2 a vt, 3 a vn, an
+    // index triple (12 bytes) a corner before and after cutting; the Mesh: a
+    // vertex, an index and a map node for every corner of every triangle,
+    // then its copy on the GPU.
+    c.bytes = c.positions * 24 + c.texcoords * 8 + c.normals * 12 + corners * 12 +
+              c.triangles * 3 * (12 + 2 * (sizeof(MeshVertex) + 4) + 64);
+    return c;
+}
+
 bool loadObj(const std::string& path, Mesh& out, std::string& error) {
-    tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
-    config.vertex_color = false;
-    tinyobj::ObjReader reader;
     // Read here, not by tinyobjloader: only a regular file of bounded size,
     // and no .mtl file it names (materials are not used, and a model must
     // not open files the script could not name itself).
@@ -31,6 +73,27 @@ bool loadObj(const std::string& path, Mesh& out, std::string& error) {
         error = "cannot load OBJ '" + path + "': it " + why;
         return false;
     }
+    return loadObjText(text, path, out, error);
+}
+
+bool loadObjText(const std::string& text, const std::string& path, Mesh& out, std::string& error) {
+    const ObjCounts counts = countObj(text);
+    if (counts.mostCorners > kMaxObjFaceCorners) {
+        error = fmt::format("cannot load OBJ '{}': the face on its line {} has {} corners; Glimmer cuts faces of at "
+                            "most {} corners into triangles", path, counts.mostCornersLine, counts.mostCorners,
+                            kMaxObjFaceCorners);
+        return false;
+    }
+    if (counts.cuttingWork > kMaxObjCuttingWork) {
+        error = fmt::format("cannot load OBJ '{}': its faces of five corners or more are too many to cut into "
+                            "triangles (corners squared add up to {}, at most {}); split them in the modeller",
+                            path, counts.cuttingWork, kMaxObjCuttingWork);
+        return false;
+    }
+    tinyobj::ObjReaderConfig config;
+    config.triangulate = true;
+    config.vertex_color = false;
+    tinyobj::ObjReader reader;
     if (!reader.ParseFromString(text, std::string(), config)) {
         std::string reason = trimmed(reader.Error());
         if (reason.empty()) reason = "unknown error";

@@ -1,10 +1,10 @@
 #include "gl/shader_build.h"
 #include "gl/builtin_feed.h"
+#include "shader/glsl_scan.h"
 #include "shader/uninitialized_globals.h"
 
 #include <algorithm>
 #include <cstring>
-#include <regex>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -129,17 +129,10 @@ std::string constName(const std::string& message) {
 // GLSL 1.50 on): its line (1-based) and number; 0 when the text has none.
 // Only the first directive counts, as for the compiler.
 int profilelessVersionLine(const std::string& text, int& version) {
-    static const std::regex directive(R"(^[ \t]*#[ \t]*version[ \t]+(\d+)[ \t]*(\w*)[ \t]*(//.*)?\r?$)");
-    std::istringstream in(text);
-    std::string line;
-    for (int n = 1; std::getline(in, line); ++n) {
-        if (line.find("#") == std::string::npos || line.find("version") == std::string::npos) continue;
-        std::smatch m;
-        if (!std::regex_match(line, m, directive)) return 0;
-        version = std::stoi(m[1].str());
-        return version >= 150 && m[2].str().empty() ? n : 0;
-    }
-    return 0;
+    GlslVersion v = glslVersionOf(text);
+    if (v.line == 0 || !v.wellFormed) return 0;
+    version = v.number;
+    return version >= 150 && v.profile.empty() ? v.line : 0;
 }
 
 // `text` with " compatibility" after the number of its `#version` on `line`.
@@ -157,12 +150,9 @@ std::string withCompatibilityProfile(const std::string& text, int line) {
 // The first compatibility built-in an error of the log names as undeclared
 // ("gl_Vertex"); "" when none does.
 std::string undeclaredBuiltin(const Diagnostics& said) {
-    static const std::regex name(R"(gl_[A-Za-z0-9_]+)");
     for (const auto& d : said.all()) {
-        std::smatch m;
-        if (d.severity == Severity::Error && d.message.find("undeclared") != std::string::npos &&
-            std::regex_search(d.message, m, name))
-            return m.str();
+        if (d.severity != Severity::Error || d.message.find("undeclared") == std::string::npos) continue;
+        if (std::string name = firstWordWithPrefix(d.message, "gl_"); !name.empty()) return name;
     }
     return {};
 }

@@ -1,4 +1,5 @@
 #include "image/animation.h"
+#include "util/write_file.h"
 
 #include <webp/demux.h>
 #include <webp/encode.h>
@@ -132,15 +133,9 @@ bool writeAnimatedWebp(const std::string& path, const std::vector<Image>& frames
         error = std::string("libwebp: ") + WebPAnimEncoderGetError(enc.get());
         return false;
     }
-    FILE* file = std::fopen(path.c_str(), "wb");
-    bool written = file && std::fwrite(data.bytes, 1, data.size, file) == data.size;
-    if (file) written = std::fclose(file) == 0 && written;
+    bool written = writeBytesReplacing(path, data.bytes, data.size, error);
     WebPDataClear(&data);
-    if (!written) {
-        error = "cannot write " + path;
-        return false;
-    }
-    return true;
+    return written;
 }
 
 bool readAnimatedWebp(const std::string& path, DecodedAnimation& out, std::string& error) {

@@ -9,6 +9,7 @@
 
 #include "image/float_pixels.h"
 #include "image/image.h"
+#include "util/write_file.h"
 
 namespace glimmer {
 
@@ -25,23 +26,23 @@ bool writePng16(const std::string& path, const Image& img, std::string& error) {
     image.width = png_uint_32(img.width);
     image.height = png_uint_32(img.height);
     image.format = PNG_FORMAT_LINEAR_RGB_ALPHA;
-    if (!png_image_write_to_file(&image, path.c_str(), 0, out.data(), 0, nullptr)) {
-        error = "cannot write " + path + ": " + image.message;
+    return writeReplacing(path, [&](const std::string& target, std::string& why) {
+        if (png_image_write_to_file(&image, target.c_str(), 0, out.data(), 0, nullptr)) return true;
+        why = "cannot write " + path + ": " + image.message;
         return false;
-    }
-    return true;
+    }, error);
 }
 
 bool writeExr(const std::string& path, const Image& img, std::string& error) {
     std::vector<float> px;
     if (!floatPixels(img, "writeExr", px, error)) return false;
-    const char* err = nullptr;
-    if (SaveEXR(px.data(), img.width, img.height, 4, 0, path.c_str(), &err) < 0) {
-        error = "cannot write " + path + (err ? std::string(": ") + err : std::string());
+    return writeReplacing(path, [&](const std::string& target, std::string& why) {
+        const char* err = nullptr;
+        if (SaveEXR(px.data(), img.width, img.height, 4, 0, target.c_str(), &err) >= 0) return true;
+        why = "cannot write " + path + (err ? std::string(": ") + err : std::string());
         if (err) FreeEXRErrorMessage(err);
         return false;
-    }
-    return true;
+    }, error);
 }
 
 }  // namespace glimmer

@@ -2,6 +2,7 @@
 #include "image/float_pixels.h"
 #include "image/sniff.h"
 #include "util/read_file.h"
+#include "util/write_file.h"
 
 #include <stb/stb_image_write.h>
 
@@ -129,12 +130,7 @@ bool writeBmp(const std::string& path, const Image& img, std::string& error) {
         error = "writeBmp: empty or inconsistent image";
         return false;
     }
-    std::ofstream f(path, std::ios::binary);
-    if (!f.write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()))) {
-        error = "cannot write " + path;
-        return false;
-    }
-    return true;
+    return writeBytesReplacing(path, bytes.data(), bytes.size(), error);
 }
 
 namespace {
@@ -166,33 +162,28 @@ bool floatPixels(const Image& img, const char* writer, std::vector<float>& px, s
 bool writeHdr(const std::string& path, const Image& img, std::string& error) {
     std::vector<float> f;
     if (!floatPixels(img, "writeHdr", f, error)) return false;
-    if (!stbi_write_hdr(path.c_str(), img.width, img.height, 4, f.data())) {
-        error = "cannot write " + path;
+    return writeReplacing(path, [&](const std::string& target, std::string& why) {
+        if (stbi_write_hdr(target.c_str(), img.width, img.height, 4, f.data())) return true;
+        why = "cannot write " + path;
         return false;
-    }
-    return true;
+    }, error);
 }
 
 bool writePfm(const std::string& path, const Image& img, std::string& error) {
     std::vector<float> px;
     if (!floatPixels(img, "writePfm", px, error)) return false;
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) {
-        error = "cannot write " + path;
-        return false;
-    }
-    // "PF" is colour; a negative scale means little-endian floats.
-    std::fprintf(f, "PF\n%d %d\n-1.0\n", img.width, img.height);
+    // "PF" is colour; a negative scale means little-endian floats. PFM
+    // stores the bottom row first.
+    std::string bytes = "PF\n" + std::to_string(img.width) + " " + std::to_string(img.height) + "\n-1.0\n";
+    const size_t head = bytes.size(), rowBytes = size_t(img.width) * 3 * sizeof(float);
+    bytes.resize(head + rowBytes * size_t(img.height));
     std::vector<float> row(size_t(img.width) * 3);
-    bool ok = true;
-    for (int y = img.height - 1; y >= 0 && ok; --y) {  // PFM stores the bottom row first
+    for (int y = img.height - 1; y >= 0; --y) {
         for (int x = 0; x < img.width; ++x)
             for (int c = 0; c < 3; ++c) row[size_t(x) * 3 + size_t(c)] = px[(size_t(y) * size_t(img.width) + size_t(x)) * 4 + size_t(c)];
-        ok = std::fwrite(row.data(), sizeof(float), row.size(), f) == row.size();
+        std::memcpy(bytes.data() + head + rowBytes * size_t(img.height - 1 - y), row.data(), rowBytes);
     }
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) error = "cannot write " + path;
-    return ok;
+    return writeBytesReplacing(path, bytes.data(), bytes.size(), error);
 }
 
 bool writeImage(const std::string& path, const Image& img, std::string& error) {

@@ -7,6 +7,7 @@
 // (as pigz does); the Adler-32s of the strips are combined. The decoded
 // pixels are the image's, at every level.
 #include "image/png_stream.h"
+#include "util/write_file.h"
 
 #include <zlib.h>
 
@@ -175,15 +176,8 @@ bool writePng(const std::string& path, const Image& img, std::string& error, int
         error = "cannot encode " + path + " as PNG";
         return false;
     }
-    std::FILE* f = std::fopen(path.c_str(), "wb");
-    if (!f) {
-        error = "cannot write " + path;
-        return false;
-    }
-    bool ok = std::fwrite(bytes.data(), 1, bytes.size(), f) == bytes.size();
-    ok = (std::fclose(f) == 0) && ok;
-    if (!ok) error = "cannot write " + path;
-    return ok;
+    // A temporary file renamed over the output: a full disk keeps the last good picture.
+    return writeBytesReplacing(path, bytes.data(), bytes.size(), error);
 }
 
 }  // namespace glimmer

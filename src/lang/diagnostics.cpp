@@ -57,6 +57,26 @@ std::string escaped(unsigned char c) {
     return std::string("\\x") + hex[c >> 4] + hex[c & 15];
 }
 
+// How many bytes of a control character start at `i` (tab excepted): 1 for
+// C0 and DEL, 2 for a C1 character in UTF-8 (U+0080..U+009F, "\xc2\x9b" is
+// CSI: a terminal takes it as the start of an escape sequence); 0 for text.
+size_t controlBytes(const std::string& s, size_t i) {
+    const unsigned char c = static_cast<unsigned char>(s[i]);
+    if (isControl(c)) return c == '\t' ? 0 : 1;
+    if (c == 0xc2 && i + 1 < s.size()) {
+        const unsigned char d = static_cast<unsigned char>(s[i + 1]);
+        if (d >= 0x80 && d <= 0x9f) return 2;
+    }
+    return 0;
+}
+
+// The control character at `i` (controlBytes(s, i) bytes) as \xNN escapes.
+std::string escapedAt(const std::string& s, size_t i, size_t n) {
+    std::string out;
+    for (size_t k = 0; k < n; ++k) out += escaped(static_cast<unsigned char>(s[i + k]));
+    return out;
+}
+
 bool continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
 }  // namespace
@@ -65,7 +85,8 @@ std::string sanitizeForTerminal(const std::string& text, bool keepNewlines) {
     std::string out;
     size_t chars = 0;  // on the current line
     bool cut = false;
-    for (char ch : text) {
+    for (size_t i = 0; i < text.size(); ++i) {
+        const char ch = text[i];
         const unsigned char c = static_cast<unsigned char>(ch);
         if (keepNewlines && c == '\n') {
             out += '\n';
@@ -80,10 +101,21 @@ std::string sanitizeForTerminal(const std::string& text, bool keepNewlines) {
             continue;
         }
         if (!continuation(ch)) ++chars;
-        if (isControl(c) && !(c == '\t')) out += escaped(c);
-        else out += ch;
+        if (size_t n = controlBytes(text, i)) {
+            out += escapedAt(text, i, n);
+            i += n - 1;
+        } else {
+            out += ch;
+        }
     }
     return out;
+}
+
+std::string overMemoryBudget(std::uint64_t neededBytes, std::uint64_t budgetBytes) {
+    auto mib = [](std::uint64_t b) { return (b + (std::uint64_t(1) << 20) - 1) >> 20; };
+    return "the script's textures, targets, meshes and parsed lines need " + std::to_string(mib(neededBytes)) +
+           " MiB by this line, more than the memory budget of " + std::to_string(budgetBytes >> 20) +
+           " MiB (--max-memory)";
 }
 
 const char* severityName(Severity s) {
@@ -135,11 +167,13 @@ std::string formatDiagnostic(const Diagnostic& d, const SourceTexts& sources) {
             break;
         }
         if (!continuation(c)) ++chars;
-        const std::string piece = isControl(static_cast<unsigned char>(c)) && c != '\t' ? escaped(c) : std::string(1, c);
+        const size_t n = controlBytes(src, i);
+        const std::string piece = n ? escapedAt(src, i, n) : std::string(1, c);
         shown += piece;
         // Columns count bytes, but the caret must line up on screen: copy
         // tabs, and give a multi-byte UTF-8 character one space.
         if (i < col && !continuation(c)) pad += c == '\t' ? std::string("\t") : std::string(piece.size(), ' ');
+        if (n > 1) i += n - 1;  // the C1 character's second byte is in `piece`
     }
     out += '\n';
     out += shown;

@@ -1,6 +1,7 @@
 // Diagnostics are values: every layer appends to a Diagnostics list and the
 // front end decides how to print them. Nothing below the front end exits.
 #pragma once
+#include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
@@ -75,6 +76,11 @@ constexpr size_t kMaxPrintedDiagnostics = 100;
 // `text` made safe to print: control characters escaped (newlines and tabs
 // kept when `keepNewlines`), each line cut to kMaxEchoedChars characters.
 std::string sanitizeForTerminal(const std::string& text, bool keepNewlines);
+
+// The one message for a script past --max-memory, whichever step counted it
+// (the parser's structures, the plan's textures and targets, the load step's
+// images, meshes and models): "the script needs N MiB by this line, ...".
+std::string overMemoryBudget(std::uint64_t neededBytes, std::uint64_t budgetBytes);
 
 // clang style: "file:line:col: error: message", then the source line and a
 // caret under the column (omitted when the line is unknown). A message of

@@ -1,6 +1,7 @@
 #include "lang/lexer.h"
 
 #include "lang/decimal_comma.h"
+#include "lang/script.h"
 
 #include <cmath>
 #include <system_error>
@@ -66,16 +67,29 @@ Token makeToken(std::string_view raw, SourceLoc loc) {
     return t;
 }
 
-void tokenize(const Segment& seg, std::vector<Token>& out) {
+// False when the budget is spent: the token at `loc` is not kept.
+bool charge(LexBudget* budget, size_t textBytes, SourceLoc loc) {
+    if (!budget || budget->maxBytes == 0) return true;
+    budget->used += tokenCharge(textBytes);
+    if (budget->used <= budget->maxBytes) return true;
+    budget->overAt = loc;
+    return false;
+}
+
+void tokenize(const Segment& seg, std::vector<Token>& out, LexBudget* budget) {
     const std::string& s = seg.text;
     size_t i = 0;
-    while (i < s.size()) {
+    while (i < s.size() && !(budget && budget->over())) {
         char c = s[i];
         if (isSpace(c) || c == ',') {
             ++i;
             continue;
         }
         SourceLoc loc{seg.line, seg.col + static_cast<int>(i)};
+        size_t j = i + 1;
+        if (!isBracket(c))
+            while (j < s.size() && !isDelimiter(s[j])) ++j;
+        if (!charge(budget, j - i, loc)) return;
         if (isBracket(c)) {
             Token t;
             bool open = c == '<' || c == '{' || c == '[';
@@ -86,8 +100,6 @@ void tokenize(const Segment& seg, std::vector<Token>& out) {
             ++i;
             continue;
         }
-        size_t j = i;
-        while (j < s.size() && !isDelimiter(s[j])) ++j;
         out.push_back(makeToken(std::string_view(s).substr(i, j - i), loc));
         i = j;
     }
@@ -104,7 +116,13 @@ char closingBracket(char open) {
     }
 }
 
-std::vector<LogicalLine> lexScript(std::string_view text) {
+std::uint64_t tokenCharge(size_t textBytes) {
+    // The token and the parser's Arg, each twice for a vector's growth, and
+    // the characters in both.
+    return 2 * (sizeof(Token) + sizeof(Arg)) + 2 * std::uint64_t(textBytes);
+}
+
+std::vector<LogicalLine> lexScript(std::string_view text, LexBudget* budget) {
     std::vector<LogicalLine> lines;
     LogicalLine current;
     auto flush = [&] {
@@ -115,7 +133,7 @@ std::vector<LogicalLine> lexScript(std::string_view text) {
 
     size_t pos = 0;
     int lineNo = 0;
-    while (pos < text.size()) {
+    while (pos < text.size() && !(budget && budget->over())) {
         ++lineNo;
         size_t end = text.find('\n', pos);
         if (end == std::string_view::npos) end = text.size();
@@ -135,7 +153,7 @@ std::vector<LogicalLine> lexScript(std::string_view text) {
             col = 4;
         }
         Segment seg{lineNo, col, std::string(line)};
-        tokenize(seg, current.tokens);
+        tokenize(seg, current.tokens, budget);
         current.segments.push_back(std::move(seg));
         if (!continues) flush();
     }

@@ -4,6 +4,7 @@
 // reports anything: it records what it saw (e.g. a malformed number) in the
 // token, and the parser decides whether that matters for the command at hand.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -40,8 +41,21 @@ struct LogicalLine {
     std::vector<Segment> segments;  // lets MessageBox take its text verbatim
 };
 
-// Logical lines that hold at least one token, in order.
-std::vector<LogicalLine> lexScript(std::string_view text);
+// What lexing and parsing may take, counted as tokens are made (--max-memory,
+// issue 30: a 10 MB line once took 1 GB): each token is charged for itself,
+// the Arg the parser makes of it and their vectors' slack, before it is kept.
+struct LexBudget {
+    std::uint64_t maxBytes = 0;  // 0: no bound
+    std::uint64_t used = 0;      // what the tokens kept so far are charged
+    SourceLoc overAt;            // the token that went past maxBytes (line 0: none did)
+    bool over() const { return overAt.line > 0; }
+};
+// The bytes one token of `textBytes` characters is charged.
+std::uint64_t tokenCharge(size_t textBytes);
+
+// Logical lines that hold at least one token, in order. With a budget,
+// lexing stops at the token that would take `used` past `maxBytes`.
+std::vector<LogicalLine> lexScript(std::string_view text, LexBudget* budget = nullptr);
 
 // The closing bracket of '<', '{' or '['; 0 for anything else.
 char closingBracket(char open);

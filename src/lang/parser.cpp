@@ -15,7 +15,8 @@ std::string quoted(std::string_view s) { return "'" + std::string(s) + "'"; }
 
 class Parser {
 public:
-    Parser(const std::string& file, Diagnostics& diags) : file_(file), diags_(diags) {}
+    Parser(const std::string& file, Diagnostics& diags, std::uint64_t maxBytes)
+        : file_(file), diags_(diags), maxBytes_(maxBytes) {}
 
     Script run(std::string_view text) {
         Script script;
@@ -24,7 +25,14 @@ public:
         // without `\` still belong to; reset by any line that is not one.
         std::optional<size_t> attachTo;
 
-        for (const LogicalLine& line : lexScript(text)) {
+        LexBudget budget{maxBytes_};
+        std::vector<LogicalLine> lines = lexScript(text, &budget);
+        script.bytes = budget.used;
+        if (budget.over()) {
+            diags_.error(file_, budget.overAt, overMemoryBudget(budget.used, maxBytes_));
+            return script;
+        }
+        for (const LogicalLine& line : lines) {
             const Token& first = line.tokens.front();
             if (first.kind != Token::Kind::Word) {
                 diags_.warning(file_, first.loc,
@@ -184,12 +192,13 @@ private:
 
     const std::string& file_;
     Diagnostics& diags_;
+    std::uint64_t maxBytes_ = 0;
 };
 
 }  // namespace
 
-Script parseScript(const std::string& file, const std::string& text, Diagnostics& diags) {
-    return Parser(file, diags).run(text);
+Script parseScript(const std::string& file, const std::string& text, Diagnostics& diags, std::uint64_t maxBytes) {
+    return Parser(file, diags, maxBytes).run(text);
 }
 
 }  // namespace glimmer

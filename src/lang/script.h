@@ -1,6 +1,7 @@
 // The parse tree of a .glib script: a flat list of commands with their
 // arguments, each carrying the place it was written. No OpenGL here.
 #pragma once
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,7 @@ struct Command {
 struct Script {
     std::string file;  // path as given by the user
     std::vector<Command> commands;
+    std::uint64_t bytes = 0;  // what lexing and parsing were charged (lang/lexer.h): part of --max-memory
 };
 
 }  // namespace glimmer

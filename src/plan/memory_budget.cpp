@@ -18,26 +18,44 @@ std::uint64_t textureBytes(const TextureDecl& t) {
 }
 
 namespace {
-std::uint64_t mib(std::uint64_t b) { return (b + (1u << 20) - 1) >> 20; }
 std::uint64_t screenBytes(const Plan& plan) {
     return std::uint64_t(plan.width) * std::uint64_t(plan.height) * 8;  // colour and depth
 }
 }  // namespace
 
 std::uint64_t plannedBytes(const Plan& plan) {
-    std::uint64_t total = screenBytes(plan);
+    std::uint64_t total = screenBytes(plan) + plan.scriptBytes;
+    if (plan.noise2DLoc.line > 0) total += noiseBytes(2, plan.noise2DRes);
+    if (plan.noise3DLoc.line > 0) total += noiseBytes(3, plan.noise3DRes);
     for (const auto& t : plan.textures) total += textureBytes(t);
     return total;
 }
 
 void reportOverBudget(const Plan& plan, SourceLoc loc, std::uint64_t total, Diagnostics& diags) {
-    diags.error(plan.scriptFile, loc,
-                fmt::format("textures and render targets need {} MiB by this line, more than the memory "
-                            "budget of {} MiB (--max-memory)", mib(total), plan.maxMemoryBytes >> 20));
+    diags.error(plan.scriptFile, loc, overMemoryBudget(total, plan.maxMemoryBytes));
+}
+
+std::uint64_t noiseBytes(int dims, int res) {
+    // The four float channels made on the CPU, the 8-bit texel they become
+    // and its copy on the GPU (image/noise.h): 24 bytes a texel.
+    std::uint64_t texels = std::uint64_t(res) * std::uint64_t(res) * (dims == 3 ? std::uint64_t(res) : 1);
+    return texels * 24;
 }
 
 void checkMemoryBudget(const Plan& plan, std::uint64_t budget, Diagnostics& diags) {
-    std::uint64_t total = screenBytes(plan);
+    std::uint64_t total = screenBytes(plan) + plan.scriptBytes;
+    // A noise resolution the script sets is charged at its line: made only
+    // for programs that read Noise2/Noise3, but a script cannot ask for
+    // more than it may have.
+    for (int dims : {2, 3}) {
+        const SourceLoc loc = dims == 2 ? plan.noise2DLoc : plan.noise3DLoc;
+        if (loc.line <= 0) continue;
+        total += noiseBytes(dims, dims == 2 ? plan.noise2DRes : plan.noise3DRes);
+        if (total > budget) {
+            reportOverBudget(plan, loc, total, diags);
+            return;
+        }
+    }
     for (const auto& t : plan.textures) {
         total += textureBytes(t);
         if (total > budget) {

@@ -14,6 +14,10 @@ namespace glimmer {
 // the image limits (image/sniff.h) when it is read.
 std::uint64_t textureBytes(const TextureDecl& t);
 
+// Bytes a built-in noise texture of `dims` (2 or 3) and resolution `res`
+// takes while it is made and once uploaded.
+std::uint64_t noiseBytes(int dims, int res);
+
 // Adds up the screen and every texture in script order; the first texture
 // that takes the total past `budget` is an error on its line.
 void checkMemoryBudget(const Plan& plan, std::uint64_t budget, Diagnostics& diags);

@@ -147,6 +147,8 @@ struct Plan {
     // The built-in noise textures' sizes (Noise2D, Noise3D; glman's 64). The
     // renderer makes them only for programs that declare Noise2 / Noise3.
     int noise2DRes = 64, noise3DRes = 64;
+    SourceLoc noise2DLoc, noise3DLoc;  // the Noise2D / Noise3D line that set them (line 0: glman's default)
+    std::uint64_t scriptBytes = 0;     // what parsing the script took (lang/lexer.h): in --max-memory too
     std::vector<ProgramDecl> programs;
     std::vector<TextureDecl> textures;
     std::vector<MeshDecl> meshes;

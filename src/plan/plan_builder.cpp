@@ -363,6 +363,7 @@ void Builder::finish() {
         if (p->needed) wanted.insert(p->reads.begin(), p->reads.end());
     }
     plan_.maxMemoryBytes = options_.maxMemoryBytes;
+    plan_.scriptBytes = script_.bytes;
     checkMemoryBudget(plan_, options_.maxMemoryBytes, diags_);
 }
 

@@ -27,6 +27,7 @@ void Builder::noiseRes(const Command& c) {
         return;
     }
     (two ? plan_.noise2DRes : plan_.noise3DRes) = int(res);
+    (two ? plan_.noise2DLoc : plan_.noise3DLoc) = c.loc;
 }
 
 int Builder::unitArg(const Command& c, const Arg& a) {

@@ -1,4 +1,5 @@
 #include "shader/compat_rewrite.h"
+#include "shader/glsl_scan.h"
 
 #include <algorithm>
 #include <cctype>
@@ -9,9 +10,6 @@
 
 namespace glimmer {
 namespace {
-
-bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The old texture lookups and the GLSL 1.30 functions that replaced them.
 struct TextureRename {
@@ -55,44 +53,6 @@ size_t skipBlanks(std::string_view s, size_t i) {
 
 }  // namespace
 
-GlslVersion glslVersionOf(std::string_view s) {
-    GlslVersion v;
-    size_t lineStart = 0;
-    int line = 1;
-    bool inBlockComment = false;
-    while (lineStart <= s.size()) {
-        size_t end = s.find('\n', lineStart);
-        if (end == std::string_view::npos) end = s.size();
-        std::string_view l = s.substr(lineStart, end - lineStart);
-        if (!inBlockComment) {
-            size_t p = skipBlanks(l, 0);
-            if (p < l.size() && l[p] == '#') {
-                p = skipBlanks(l, p + 1);
-                if (l.compare(p, 7, "version") == 0) {
-                    p = skipBlanks(l, p + 7);
-                    v.number = std::atoi(std::string(l.substr(p, 8)).c_str());
-                    while (p < l.size() && std::isdigit(static_cast<unsigned char>(l[p]))) ++p;
-                    p = skipBlanks(l, p);
-                    size_t q = p;
-                    while (q < l.size() && identChar(l[q])) ++q;
-                    v.profile = std::string(l.substr(p, q - p));
-                    v.line = line;
-                    return v;
-                }
-            }
-        }
-        // Only a block comment may hide a #version line; follow them roughly.
-        for (size_t k = 0; k + 1 < l.size(); ++k) {
-            if (!inBlockComment && l[k] == '/' && l[k + 1] == '/') break;
-            if (!inBlockComment && l[k] == '/' && l[k + 1] == '*') inBlockComment = true, ++k;
-            else if (inBlockComment && l[k] == '*' && l[k + 1] == '/') inBlockComment = false, ++k;
-        }
-        lineStart = end + 1;
-        ++line;
-    }
-    return v;
-}
-
 std::map<std::string, std::string> definesOf(std::string_view prelude) {
     std::map<std::string, std::string> out;
     size_t at = 0;
@@ -105,9 +65,9 @@ std::map<std::string, std::string> definesOf(std::string_view prelude) {
         if (l.compare(p, 7, "#define") != 0) continue;
         p = skipBlanks(l, p + 7);
         size_t q = p;
-        while (q < l.size() && identChar(l[q])) ++q;
+        while (q < l.size() && isGlslWordChar(l[q])) ++q;
         size_t r = skipBlanks(l, q), e = r;
-        while (e < l.size() && identChar(l[e])) ++e;
+        while (e < l.size() && isGlslWordChar(l[e])) ++e;
         if (q > p && e > r) out[std::string(l.substr(p, q - p))] = std::string(l.substr(r, e - r));
     }
     return out;
@@ -168,16 +128,16 @@ CompatRewrite rewriteCompatBuiltins(std::string_view s, CompatStage stage,
             i = end;
             continue;
         }
-        if (!identStart(c)) {  // numbers (1e5, 0x1Fu) whole, so no suffix is read as a word
+        if (!isGlslWordStart(c)) {  // numbers (1e5, 0x1Fu) whole, so no suffix is read as a word
             size_t j = i + 1;
             if (std::isdigit(static_cast<unsigned char>(c)))
-                while (j < s.size() && (identChar(s[j]) || s[j] == '.')) ++j;
+                while (j < s.size() && (isGlslWordChar(s[j]) || s[j] == '.')) ++j;
             body.append(s.substr(i, j - i));
             i = j;
             continue;
         }
         size_t j = i;
-        while (j < s.size() && identChar(s[j])) ++j;
+        while (j < s.size() && isGlslWordChar(s[j])) ++j;
         std::string_view spelled = s.substr(i, j - i);
         std::string_view word = spelled;
         if (auto a = aliases.find(std::string(word)); a != aliases.end()) word = a->second;
@@ -186,7 +146,7 @@ CompatRewrite rewriteCompatBuiltins(std::string_view s, CompatStage stage,
         if (word == "gl_Point") {  // gl_Point.size: a member, renamed whole
             size_t dot = skipBlanks(s, j);
             size_t m = dot < s.size() && s[dot] == '.' ? skipBlanks(s, dot + 1) : std::string_view::npos;
-            if (m != std::string_view::npos && s.compare(m, 4, "size") == 0 && (m + 4 == s.size() || !identChar(s[m + 4]))) {
+            if (m != std::string_view::npos && s.compare(m, 4, "size") == 0 && (m + 4 == s.size() || !isGlslWordChar(s[m + 4]))) {
                 const CompatBuiltin& b = compatBuiltin(CompatFeed::PointSize);
                 rename(b.name, "gl_Point");
                 used.insert(b.feed);

@@ -28,6 +28,7 @@
 //     gl_TexCoord[i] with i not a literal, ...) is left as written: the
 //     compiler then reports it at its line.
 #pragma once
+#include "shader/glsl_scan.h"
 #include <map>
 #include <string>
 #include <string_view>
@@ -53,13 +54,6 @@ CompatRewrite rewriteCompatBuiltins(std::string_view source, CompatStage stage,
 // The `#define A B` lines of a prelude (gl/shader_build.h's GSTAP) as A -> B.
 std::map<std::string, std::string> definesOf(std::string_view prelude);
 
-// The shader's #version line: its number (110 when none), profile word and
-// 1-based line (0 when none).
-struct GlslVersion {
-    int number = 110;
-    std::string profile;
-    int line = 0;
-};
-GlslVersion glslVersionOf(std::string_view source);
+// The shader's #version line: glslVersionOf in shader/glsl_scan.h.
 
 }  // namespace glimmer

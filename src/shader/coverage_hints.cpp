@@ -1,19 +1,16 @@
 #include "shader/coverage_hints.h"
+#include "shader/glsl_scan.h"
 
 #include <cctype>
 
 namespace glimmer {
 namespace {
 
-bool isWordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 // Positions where `word` appears as a whole identifier.
 template <typename F>
 void forEachWord(const std::string& text, const std::string& word, F f) {
     for (size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
-        bool before = at > 0 && isWordChar(text[at - 1]);
-        bool after = at + word.size() < text.size() && isWordChar(text[at + word.size()]);
-        if (!before && !after) f(at);
+        if (isWholeWordAt(text, at, word.size())) f(at);
     }
 }
 

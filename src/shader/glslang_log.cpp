@@ -1,4 +1,5 @@
 #include "shader/glslang_log.h"
+#include "shader/glsl_scan.h"
 
 #include <cctype>
 #include <climits>
@@ -6,8 +7,6 @@
 
 namespace glimmer {
 namespace {
-
-bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 std::string_view lineOf(std::string_view text, int line) {
     size_t at = 0;
@@ -86,10 +85,10 @@ std::string_view unexpectedToken(std::string_view msg) {
 int columnOf(std::string_view text, int line, std::string_view token) {
     std::string_view l = lineOf(text, line);
     if (token.empty()) return 0;
-    const bool word = identChar(token.front()) && identChar(token.back());
+    const bool word = isGlslWordChar(token.front()) && isGlslWordChar(token.back());
     for (size_t at = l.find(token); at != std::string_view::npos; at = l.find(token, at + 1)) {
-        bool alone = !word || ((at == 0 || !identChar(l[at - 1])) &&
-                               (at + token.size() >= l.size() || !identChar(l[at + token.size()])));
+        bool alone = !word || ((at == 0 || !isGlslWordChar(l[at - 1])) &&
+                               (at + token.size() >= l.size() || !isGlslWordChar(l[at + token.size()])));
         if (alone) return int(at) + 1;
     }
     return 0;

@@ -1,4 +1,5 @@
 #include "shader/gs4_translate.h"
+#include "shader/glsl_scan.h"
 
 #include <algorithm>
 #include <cctype>
@@ -15,8 +16,6 @@ struct Token {
     std::string_view text;
 };
 
-bool identStart(char c) { return std::isalpha(static_cast<unsigned char>(c)) || c == '_'; }
-bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // Enough of GLSL to find identifiers and brackets: comments, strings and
 // whitespace are skipped; a preprocessor line is one Directive token.
@@ -65,12 +64,12 @@ std::vector<Token> tokenize(std::string_view s) {
             continue;
         }
         size_t b = i;
-        if (identStart(c)) {
-            while (i < n && identChar(s[i])) ++i;
+        if (isGlslWordStart(c)) {
+            while (i < n && isGlslWordChar(s[i])) ++i;
             out.push_back({Token::Kind::Ident, b, i, s.substr(b, i - b)});
         } else if (std::isdigit(static_cast<unsigned char>(c)) ||
                    (c == '.' && i + 1 < n && std::isdigit(static_cast<unsigned char>(s[i + 1])))) {
-            while (i < n && (identChar(s[i]) || s[i] == '.')) ++i;
+            while (i < n && (isGlslWordChar(s[i]) || s[i] == '.')) ++i;
             out.push_back({Token::Kind::Number, b, i, s.substr(b, i - b)});
         } else {
             ++i;
@@ -116,7 +115,7 @@ bool isGs4Extension(std::string_view d) {
     if (p == std::string_view::npos || d.compare(p, 9, "extension") != 0) return false;
     p = d.find_first_not_of(" \t", p + 9);
     return p != std::string_view::npos && d.compare(p, 23, "GL_EXT_geometry_shader4") == 0 &&
-           (p + 23 == d.size() || !identChar(d[p + 23]));
+           (p + 23 == d.size() || !isGlslWordChar(d[p + 23]));
 }
 
 // "#version 120" -> 120; 0 when not a #version line.

@@ -1,12 +1,11 @@
 #include "shader/precision_strip.h"
+#include "shader/glsl_scan.h"
 
 #include <cctype>
 #include <cstdlib>
 
 namespace glimmer {
 namespace {
-
-bool identChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The shader's #version number; 110 when it has none.
 int versionOf(std::string_view s) {
@@ -63,13 +62,13 @@ PrecisionStripResult stripPrecisionQualifiers(std::string_view source) {
             for (; i < end; ++i) line += t[i] == '\n';
             continue;
         }
-        if (!identChar(c) || std::isdigit(static_cast<unsigned char>(c))) {
+        if (!isGlslWordChar(c) || std::isdigit(static_cast<unsigned char>(c))) {
             ++i;
-            while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i - 1])) && identChar(t[i])) ++i;
+            while (i < t.size() && std::isdigit(static_cast<unsigned char>(t[i - 1])) && isGlslWordChar(t[i])) ++i;
             continue;
         }
         size_t j = i;
-        while (j < t.size() && identChar(t[j])) ++j;
+        while (j < t.size() && isGlslWordChar(t[j])) ++j;
         std::string_view word(t.data() + i, j - i);
         if (word == "precision") {
             size_t end = t.find(';', j);  // `precision highp float;`

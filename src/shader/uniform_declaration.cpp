@@ -1,18 +1,15 @@
 #include "shader/uniform_declaration.h"
+#include "shader/glsl_scan.h"
 
 #include <cctype>
 
 namespace glimmer {
 namespace {
 
-bool wordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
-
 // Whether `word` occurs in `s` from `from` on as a whole word; its end in `at`.
 bool hasWord(const std::string& s, const std::string& word, size_t from, size_t& at) {
     for (size_t i = s.find(word, from); i != std::string::npos; i = s.find(word, i + 1)) {
-        bool before = i == 0 || !wordChar(s[i - 1]);
-        bool after = i + word.size() >= s.size() || !wordChar(s[i + word.size()]);
-        if (before && after) {
+        if (isWholeWordAt(s, i, word.size())) {
             at = i + word.size();
             return true;
         }

@@ -1,4 +1,5 @@
 #include "shader/uninitialized_globals.h"
+#include "shader/glsl_scan.h"
 
 #include <cctype>
 #include <set>
@@ -6,8 +7,6 @@
 
 namespace glimmer {
 namespace {
-
-bool wordChar(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
 // The text with comments and preprocessor lines blanked (newlines kept), so
 // offsets and line numbers stay those of the original.
@@ -30,12 +29,12 @@ std::string codeOnly(const std::string& t) {
 std::vector<std::string> words(const std::string& s) {
     std::vector<std::string> out;
     for (size_t i = 0; i < s.size();) {
-        if (!wordChar(s[i])) {
+        if (!isGlslWordChar(s[i])) {
             ++i;
             continue;
         }
         size_t j = i;
-        while (j < s.size() && wordChar(s[j])) ++j;
+        while (j < s.size() && isGlslWordChar(s[j])) ++j;
         out.push_back(s.substr(i, j - i));
         i = j;
     }
@@ -65,8 +64,8 @@ bool assigns(const std::string& stmt, const std::string& name) {
     size_t i = stmt.find_first_not_of(" \t\r\n");
     if (i == std::string::npos || stmt.compare(i, name.size(), name) != 0) return false;
     i += name.size();
-    if (i < stmt.size() && wordChar(stmt[i])) return false;
-    while (i < stmt.size() && (stmt[i] == ' ' || stmt[i] == '\t' || stmt[i] == '.' || wordChar(stmt[i]))) ++i;
+    if (i < stmt.size() && isGlslWordChar(stmt[i])) return false;
+    while (i < stmt.size() && (stmt[i] == ' ' || stmt[i] == '\t' || stmt[i] == '.' || isGlslWordChar(stmt[i]))) ++i;
     if (i < stmt.size() && stmt[i] == '[') {
         size_t close = stmt.find(']', i);
         if (close == std::string::npos) return false;

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include "cli/run_glimmer.h"
 
@@ -180,16 +181,43 @@ TEST(CliSandbox, AbsolutePathsDotDotAndSymlinksOutAreRefused) {
     auto s = sb.script("Vertex /etc/passwd\nFragment ../../secret.frag\nFragment link.frag\nTexture2D 5 /proc/self/environ\n");
     auto r = checkSandboxed(s);
     EXPECT_EQ(r.exitCode, 1) << r.err;
-    const std::string real = fs::canonical(sb.secret).string();
     EXPECT_EQ(r.err, s + ":1:8: error: shader '/etc/passwd' is outside the sandbox (an absolute path)" + kOutsideTail +
                          "Vertex /etc/passwd\n       ^\n" +
-                         s + ":2:10: error: shader '../../secret.frag' is outside the sandbox (it leads to " + real + ")" +
+                         s + ":2:10: error: shader '../../secret.frag' is outside the sandbox (it leads outside the script's folder)" +
                          kOutsideTail + "Fragment ../../secret.frag\n         ^\n" +
-                         s + ":3:10: error: shader 'link.frag' is outside the sandbox (it leads to " + real + ")" +
+                         s + ":3:10: error: shader 'link.frag' is outside the sandbox (it leads outside the script's folder)" +
                          kOutsideTail + "Fragment link.frag\n         ^\n" +
                          s + ":4:13: error: texture '/proc/self/environ' is outside the sandbox (an absolute path)" +
                          kOutsideTail + "Texture2D 5 /proc/self/environ\n            ^\n"
                          "4 errors, 0 warnings\n");
+}
+
+// The message never names a link's target, and a name that leads out is
+// refused in the same words whether a file is there or not: a student
+// learns nothing of the disk outside the folder (issue 30).
+TEST(CliSandbox, LeavingTheFolderTellsNothingOfWhatIsOutside) {
+    Sandbox sb;
+    fs::create_symlink(sb.dir.path() / "no-such.frag", sb.scripts + "/dangling.frag");
+    auto s = sb.script("Fragment ../../secret.frag\nFragment ../../no-such.frag\nFragment link.frag\nFragment dangling.frag\n");
+    auto r = checkSandboxed(s);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(countOf(r.err, "is outside the sandbox (it leads outside the script's folder)"), 4) << r.err;
+    EXPECT_EQ(r.err.find(fs::canonical(sb.secret).string()), std::string::npos) << "a target was printed: " << r.err;
+    EXPECT_EQ(r.err.find("cannot find"), std::string::npos) << r.err;
+}
+
+// A hard link is the outside file under a name inside: refused, since no
+// check can tell where its other name is.
+TEST(CliSandbox, AHardLinkIsRefused) {
+    Sandbox sb;
+    ASSERT_EQ(::link(sb.secret.c_str(), (sb.scripts + "/hard.frag").c_str()), 0);
+    auto s = sb.script("Vertex plain.vert\nFragment hard.frag\nProgram P\nQuadXY 0 1\n");
+    auto r = checkSandboxed(s);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find(s + ":2:10: error: shader 'hard.frag' is outside the sandbox (a file with 2 hard links "
+                             "(another name may be outside the script's folder))" + kOutsideTail),
+              std::string::npos)
+        << r.err;
 }
 
 TEST(CliSandbox, AnIncludeFolderWidensTheSandbox) {
@@ -220,7 +248,7 @@ TEST(CliLimits, TargetsPastTheMemoryBudgetAreAnErrorOnTheirLine) {
     auto s = writeFile(dir, "mem.glib", "Texture2D 6 16384 16384 RGBA32F\nRenderToTexture 6\nQuadXY 0 1\n");
     auto r = runGlimmer({"check", s, "--backend", "osmesa"});
     EXPECT_EQ(r.exitCode, 1) << r.err;
-    EXPECT_EQ(r.err, s + ":1:1: error: textures and render targets need 4099 MiB by this line, more than the memory "
+    EXPECT_EQ(r.err, s + ":1:1: error: the script's textures, targets, meshes and parsed lines need 4099 MiB by this line, more than the memory "
                          "budget of 2048 MiB (--max-memory)\n"
                          "Texture2D 6 16384 16384 RGBA32F\n^\n1 error, 0 warnings\n");
     r = runGlimmer({"check", s, "--backend", "osmesa", "--max-memory", "1"});
@@ -235,7 +263,7 @@ TEST(CliLimits, ImageFilesCountAgainstTheMemoryBudget) {
     auto s = writeFile(dir, "img.glib", "WindowSize 16 16\nTexture2D 5 " + grid + "\nQuadXY 0 1\n");
     auto r = runGlimmer({"check", s, "--backend", "osmesa", "--max-memory", "1"});
     EXPECT_EQ(r.exitCode, 1) << r.err;
-    EXPECT_EQ(r.err, s + ":2:1: error: textures and render targets need 2 MiB by this line, more than the memory "
+    EXPECT_EQ(r.err, s + ":2:1: error: the script's textures, targets, meshes and parsed lines need 2 MiB by this line, more than the memory "
                          "budget of 1 MiB (--max-memory)\n"
                          "Texture2D 5 " + grid + "\n^\n1 error, 0 warnings\n");
     r = runGlimmer({"-q", "check", s, "--backend", "osmesa", "--max-memory", "2"});

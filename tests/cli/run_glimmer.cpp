@@ -2,10 +2,12 @@
 
 #include <fcntl.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <chrono>
+#include <cstdio>
 #include <fstream>
 #include <iterator>
 #include <random>
@@ -47,7 +49,76 @@ RunResult runGlimmer(const std::vector<std::string>& args, int timeoutSeconds) {
     return runGlimmerWithInput(args, "/dev/null", timeoutSeconds);
 }
 
+namespace {
+RunResult runWith(const std::vector<std::string>& args, const std::string& stdinPath, int timeoutSeconds,
+                  long maxFileBytes);
+}
+
 RunResult runGlimmerWithInput(const std::vector<std::string>& args, const std::string& stdinPath, int timeoutSeconds) {
+    return runWith(args, stdinPath, timeoutSeconds, 0);
+}
+
+RunResult runGlimmerWithFileSizeLimit(const std::vector<std::string>& args, long maxFileBytes, int timeoutSeconds) {
+    return runWith(args, "/dev/null", timeoutSeconds, maxFileBytes);
+}
+
+pid_t startGlimmer(const std::vector<std::string>& args, const std::string& logDir) {
+    std::vector<std::string> argv0{GLIMMER_BIN};
+    argv0.insert(argv0.end(), args.begin(), args.end());
+    std::vector<char*> argv;
+    for (auto& a : argv0) argv.push_back(a.data());
+    argv.push_back(nullptr);
+    const std::string out = logDir + "/stdout", err = logDir + "/stderr";
+    pid_t pid = ::fork();
+    if (pid < 0) throw std::runtime_error("fork failed");
+    if (pid == 0) {
+        if (::chdir(GLIMMER_SOURCE_DIR) != 0) ::_exit(127);
+        int o = ::open(out.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int e = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+        int in = ::open("/dev/null", O_RDONLY);
+        if (o < 0 || e < 0 || in < 0) ::_exit(127);
+        ::dup2(in, 0);
+        ::dup2(o, 1);
+        ::dup2(e, 2);
+        ::execv(argv[0], argv.data());
+        ::_exit(127);
+    }
+    return pid;
+}
+
+std::vector<pid_t> childrenOf(pid_t parent) {
+    std::vector<pid_t> out;
+    std::error_code ec;
+    for (const auto& entry : fs::directory_iterator("/proc", ec)) {
+        const std::string name = entry.path().filename().string();
+        if (name.empty() || name.find_first_not_of("0123456789") != std::string::npos) continue;
+        std::string stat = slurp(entry.path() / "stat");
+        // "pid (comm) state ppid ...": comm may hold spaces and brackets.
+        size_t close = stat.rfind(')');
+        if (close == std::string::npos) continue;
+        char state = 0;
+        int ppid = 0;
+        if (std::sscanf(stat.c_str() + close + 1, " %c %d", &state, &ppid) == 2 && ppid == parent)
+            out.push_back(pid_t(std::stol(name)));
+    }
+    return out;
+}
+
+bool waitUntilGone(pid_t pid, double seconds) {
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    for (;;) {
+        std::string stat = slurp("/proc/" + std::to_string(pid) + "/stat");
+        size_t close = stat.rfind(')');
+        if (stat.empty() || (close != std::string::npos && close + 2 < stat.size() && stat[close + 2] == 'Z'))
+            return true;
+        if (std::chrono::steady_clock::now() > deadline) return false;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+}
+
+namespace {
+RunResult runWith(const std::vector<std::string>& args, const std::string& stdinPath, int timeoutSeconds,
+                  long maxFileBytes) {
     TempDir io;
     fs::path outPath = io.path() / "stdout", errPath = io.path() / "stderr";
     std::vector<std::string> argv0{GLIMMER_BIN};
@@ -68,6 +139,10 @@ RunResult runGlimmerWithInput(const std::vector<std::string>& args, const std::s
         ::dup2(in, 0);
         ::dup2(out, 1);
         ::dup2(err, 2);
+        if (maxFileBytes > 0) {
+            rlimit limit{rlim_t(maxFileBytes), rlim_t(maxFileBytes)};
+            ::setrlimit(RLIMIT_FSIZE, &limit);
+        }
         ::execv(argv[0], argv.data());
         ::_exit(127);
     }
@@ -90,6 +165,7 @@ RunResult runGlimmerWithInput(const std::vector<std::string>& args, const std::s
     r.err = slurp(errPath);
     return r;
 }
+}  // namespace
 
 bool readPngSize(const std::string& path, unsigned& width, unsigned& height) {
     std::ifstream f(path, std::ios::binary);

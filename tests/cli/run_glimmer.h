@@ -1,6 +1,8 @@
 // Runs the real glimmer program for the end-to-end tests: its exit code,
 // stdout and stderr, with a time limit.
 #pragma once
+#include <sys/types.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -20,6 +22,20 @@ RunResult runGlimmer(const std::vector<std::string>& args, int timeoutSeconds = 
 // relative to the repository root).
 RunResult runGlimmerWithInput(const std::vector<std::string>& args, const std::string& stdinPath,
                               int timeoutSeconds = 60);
+
+// The same, with standard input from /dev/null and at most `maxFileBytes`
+// per file it writes (RLIMIT_FSIZE: a full disk, as the program sees it).
+RunResult runGlimmerWithFileSizeLimit(const std::vector<std::string>& args, long maxFileBytes,
+                                      int timeoutSeconds = 60);
+
+// Starts GLIMMER_BIN with `args` in the repository root, its output to files
+// in `logDir`, and returns at once: its pid (the caller waits for it).
+pid_t startGlimmer(const std::vector<std::string>& args, const std::string& logDir);
+// The pids whose parent is `parent`, from /proc.
+std::vector<pid_t> childrenOf(pid_t parent);
+// Waits up to `seconds` for `pid` to end (gone, or a zombie no one reaps);
+// true when it did.
+bool waitUntilGone(pid_t pid, double seconds);
 
 // A fresh, empty folder under the system temp folder, removed at destruction.
 class TempDir {

@@ -139,3 +139,51 @@ TEST_F(ObjTest, FileWithoutFacesIsAnError) {
 
 }  // namespace
 }  // namespace glimmer
+
+namespace glimmer {
+namespace {
+
+// What an OBJ asks for, counted before tinyobjloader sees it (issue 30).
+TEST(ObjCounts, CountsLinesCornersAndTheTrianglesFacesBecome) {
+    ObjCounts c = countObj("# a quad and a pentagon\nv 0 0 0\nv 1 0 0\n  v 1 1 0\nvt 0 0\nvn 0 0 1\n"
+                           "f 1 2 3 1\nf\t1/1/1 2/1/1 3/1/1 1 2\r\nvertex 1\n");
+    EXPECT_EQ(c.positions, 3u);
+    EXPECT_EQ(c.texcoords, 1u);
+    EXPECT_EQ(c.normals, 1u);
+    EXPECT_EQ(c.triangles, 2u + 3u);
+    EXPECT_EQ(c.mostCorners, 5u);
+    EXPECT_EQ(c.mostCornersLine, 8);
+    EXPECT_EQ(c.cuttingWork, 25u);  // only the pentagon: quads and triangles are cut at once
+    EXPECT_GE(c.bytes, 5u * 3u * sizeof(MeshVertex));
+}
+
+TEST(ObjCounts, AFaceOfTooManyCornersIsRefusedBeforeParsing) {
+    std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf";
+    for (int i = 0; i < 1001; ++i) text += " " + std::to_string(1 + i % 3);
+    Mesh m;
+    std::string error;
+    EXPECT_FALSE(loadObjText(text + "\n", "fan.obj", m, error));
+    EXPECT_EQ(error, "cannot load OBJ 'fan.obj': the face on its line 4 has 1001 corners; Glimmer cuts faces of at "
+                     "most 1000 corners into triangles");
+}
+
+TEST(ObjCounts, ManyLargeFacesAreRefusedTogether) {
+    std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\n", face = "f";
+    for (int i = 0; i < 1000; ++i) face += " " + std::to_string(1 + i % 3);
+    for (int k = 0; k < 101; ++k) text += face + "\n";  // 101 x 1000^2 > 10^8
+    Mesh m;
+    std::string error;
+    EXPECT_FALSE(loadObjText(text, "many.obj", m, error));
+    EXPECT_EQ(error, "cannot load OBJ 'many.obj': its faces of five corners or more are too many to cut into "
+                     "triangles (corners squared add up to 101000000, at most 100000000); split them in the modeller");
+}
+
+TEST(ObjCounts, MeshBytesCountBothCopies) {
+    Mesh m;
+    m.vertices.resize(10);
+    m.indices.resize(30);
+    EXPECT_EQ(meshBytes(m), 2u * (10u * sizeof(MeshVertex) + 30u * 4u));
+}
+
+}  // namespace
+}  // namespace glimmer

@@ -53,6 +53,18 @@ TEST(Diagnostics, CaretCountsAMultiByteCharacterOnce) {
               "f:1:19: error: m\nTexture2D 5 caf\xC3\xA9 x\n                 ^");
 }
 
+// A C1 control character (U+009B, CSI, two bytes in UTF-8) is a terminal
+// escape as ESC is: escaped in the message and in the echoed line, and the
+// caret still lands on the character after it (issue 30).
+TEST(Diagnostics, C1ControlCharactersAreEscapedLikeC0Ones) {
+    SourceTexts src;
+    src.add("f", "Texture2D 5 a\xc2\x9b" "2J x\n");
+    EXPECT_EQ(formatDiagnostic({Severity::Error, "f", {1, 19}, "m \xc2\x9b" "31m"}, src),
+              "f:1:19: error: m \\xc2\\x9b31m\nTexture2D 5 a\\xc2\\x9b2J x\n                        ^");
+    // U+00A0 and other characters from U+00A0 on are text, not controls.
+    EXPECT_EQ(sanitizeForTerminal("caf\xc3\xa9 \xc2\xa0", false), "caf\xc3\xa9 \xc2\xa0");
+}
+
 TEST(Diagnostics, LineZeroGivesFileAndMessageOnly) {
     SourceTexts src;
     src.add("a.glib", "Foo\n");

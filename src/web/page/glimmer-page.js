@@ -4,9 +4,8 @@
 //
 // Two folders in the module's file system:
 //   /lesson  the bundled scripts, shaders and textures (embedded at build)
-//   /user    the user's own: a folder picked or dropped on the page, or the
-//            files of a lesson script loaded with ?lesson=FILE.js (what
-//            tools/render-web.sh and a packed lesson use); see mountUser.
+//   /user    the user's own: a folder picked or dropped on the page, or a
+//            lesson's files (see "A lesson" below); see mountUser.
 // A script runs with its folder's root as the working directory, so its
 // diagnostics name files as the desktop does when run from that root.
 //
@@ -16,32 +15,104 @@
 // on #verdict, the text of #diagnostics, and for a render the picture as a
 // PNG data URL in data-png on #picture. ?frames=N times N more frames of
 // it (data-frame-ms on #picture); data-first-picture-ms on the body is the
-// time from the start of loading to the first picture.
+// time from the start of loading to the first picture. A refused lesson is
+// data-exit="2" and data-lesson="refused" on #verdict, the reason its text.
 "use strict";
 // What a user's folder may hold: checked before anything is written into
 // the module's memory (a dropped folder may be anything).
 const kMaxUserFiles = 2000;
 const kMaxUserBytes = 256 * 1024 * 1024;
 
-// A lesson script (?lesson=FILE.js) sets globalThis.glimmerLesson to
-// { files: { "relative/path": "base64", ... } } before the module starts.
-const loadLessonScript = (url) => new Promise((resolve, reject) => {
-  const tag = document.createElement("script");
-  tag.src = url;
-  tag.onload = () => resolve(globalThis.glimmerLesson || { files: {} });
-  tag.onerror = () => reject(new Error("cannot load the lesson " + url));
-  document.head.appendChild(tag);
+// A lesson is DATA, never code: JSON {"files": {"relative/path": "base64",
+// ...}, "name"?: "..."}, parsed with JSON.parse and checked here. A link
+// (?lesson=URL) is something anyone can send, and code run in the page's
+// origin could read the drafts kept in its storage; so a lesson comes only
+// from the page's own origin (a page opened from disk: only from disk), by
+// XMLHttpRequest (Chromium's fetch() cannot read file: URLs), never as a
+// script. A packed page (tools/web_lesson.py pack --html) carries it in a
+// <script type="application/json" id="glimmer-lesson"> data block; a
+// --static folder names lesson.json in <meta name="glimmer-lesson">.
+// base64 of kMaxUserBytes and room for the names.
+const kMaxLessonText = Math.ceil(kMaxUserBytes / 3) * 4 + kMaxUserFiles * 4096;
+const refusal = (why) => Object.assign(new Error(why), { refusal: true });
+const shownUrl = (text) => JSON.stringify(text.length > 80 ? text.slice(0, 80) + "..." : text);
+const lessonUrlChecked = (text) => {
+  let url;
+  try { url = new URL(text, location.href); } catch { throw refusal("refused: the lesson " + shownUrl(text) + " is not a URL"); }
+  if (location.protocol === "file:") {
+    if (url.protocol !== "file:")
+      throw refusal("refused: the lesson " + shownUrl(text) + " is not on this disk: a page opened from disk loads a lesson only from a file: URL");
+  } else if ((url.protocol !== "http:" && url.protocol !== "https:") || url.origin !== location.origin) {
+    throw refusal("refused: the lesson " + shownUrl(text) + " is not on this page's own site (" + location.origin
+                  + "): a lesson is loaded only from beside the page");
+  }
+  return url;
+};
+const loadLessonText = (url) => new Promise((resolve, reject) => {
+  const cannot = (why) => reject(refusal("cannot load the lesson " + shownUrl(url.href) + ": " + why));
+  const request = new XMLHttpRequest();
+  request.open("GET", url.href);
+  request.overrideMimeType("text/plain; charset=utf-8");  // text to parse, whatever the server calls it
+  request.onprogress = (e) => { if (e.loaded > kMaxLessonText) { request.abort(); cannot("larger than a lesson may be"); } };
+  request.onload = () => {
+    if (url.protocol === "file:" ? request.status !== 0 && request.status !== 200 : request.status !== 200)
+      return cannot("the server answered " + request.status);
+    // A redirect may not take the lesson to another origin.
+    if (url.protocol !== "file:" && new URL(request.responseURL || url.href).origin !== location.origin)
+      return cannot("it was redirected to another site");
+    resolve(request.responseText);
+  };
+  request.onerror = () => cannot(url.protocol === "file:"
+    ? "not readable (from disk, Chromium needs --allow-file-access-from-files; or serve the folder, or pack the lesson with --html)"
+    : "no answer");
+  request.send();
 });
-
 const base64Bytes = (text) => Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
+// The lesson's text -> { name, files: [[path, Uint8Array], ...] }, or a
+// refusal with the reason; paths are checked where they are mounted.
+const parseLesson = (text, where) => {
+  const notLesson = () => refusal("refused: " + where + ' is not a lesson: JSON {"files": {"path": "base64", ...}} (a lesson is data, never a script)');
+  if (text.length > kMaxLessonText) throw refusal("refused: " + where + " is larger than a lesson may be");
+  let lesson;
+  try { lesson = JSON.parse(text); } catch { throw notLesson(); }
+  const plain = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+  if (!plain(lesson) || !plain(lesson.files)) throw notLesson();
+  const entries = Object.entries(lesson.files);
+  if (entries.length > kMaxUserFiles) throw refusal("refused: more than " + kMaxUserFiles + " files");
+  let bytes = 0;
+  for (const [path, data] of entries) {
+    if (typeof data !== "string") throw notLesson();
+    bytes += Math.floor(data.length / 4) * 3;
+  }
+  if (bytes > kMaxUserBytes) throw refusal("refused: more than " + kMaxUserBytes / (1024 * 1024) + " MiB");
+  const files = entries.map(([path, data]) => {
+    try { return [path, base64Bytes(data)]; } catch { throw refusal("refused: the file " + JSON.stringify(path) + " of " + where + " is not base64"); }
+  });
+  return { name: typeof lesson.name === "string" ? lesson.name.slice(0, 200) : "", files };
+};
 
 // A packed lesson (tools/web_lesson.py pack) carries its files and the
-// module's WebAssembly in the page itself: it opens from disk, no server.
+// module's WebAssembly in the page itself, as data blocks: it opens from
+// disk, no server.
 const query = new URLSearchParams(location.search);
-const lessonUrl = query.get("lesson");
-const packed = globalThis.glimmerLesson || null;
-const moduleOptions = globalThis.glimmerWasm ? { wasmBinary: base64Bytes(globalThis.glimmerWasm) } : {};
-Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUrl) : packed]).then(([glimmer, lesson]) => {
+const dataBlock = (id) => {
+  const block = document.getElementById(id);
+  return block && block.tagName === "SCRIPT" && block.type !== "" && !/javascript|module/i.test(block.type) ? block : null;
+};
+const packedLesson = dataBlock("glimmer-lesson");
+const lessonMeta = document.querySelector('meta[name="glimmer-lesson"]');
+const lessonUrl = query.has("lesson") ? query.get("lesson") : lessonMeta ? lessonMeta.content : null;
+// Resolves to { lesson } (null: none) or { refused: reason }.
+const lessonLoaded = (async () => {
+  if (lessonUrl !== null) {
+    const url = lessonUrlChecked(lessonUrl);
+    return parseLesson(await loadLessonText(url), "the lesson " + shownUrl(lessonUrl));
+  }
+  return packedLesson ? parseLesson(packedLesson.textContent, "the packed lesson") : null;
+})().then((lesson) => ({ lesson }), (e) => ({ refused: e.refusal ? e.message : "refused: the lesson: " + e }));
+const packedWasm = dataBlock("glimmer-wasm");
+const moduleOptions = packedWasm ? { wasmBinary: base64Bytes(packedWasm.textContent) } : {};
+Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded]) => {
   // Since the page began to load: the module fetched, compiled and started
   // (PERFORMANCE.md splits the first picture's time at this mark).
   document.body.dataset.moduleReadyMs = performance.now().toFixed(0);
@@ -103,14 +174,22 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
       }
     };
     clear("/user");
-    for (const [path, data] of files) {
-      const parts = path.split("/");
-      let dir = "/user";
-      for (const part of parts.slice(0, -1)) {
-        dir += "/" + part;
-        if (!FS.analyzePath(dir).exists) FS.mkdir(dir);
+    let at = "";
+    try {
+      for (const [path, data] of files) {
+        at = path;
+        const parts = path.split("/");
+        let dir = "/user";
+        for (const part of parts.slice(0, -1)) {
+          dir += "/" + part;
+          if (!FS.analyzePath(dir).exists) FS.mkdir(dir);
+        }
+        FS.writeFile("/user/" + path, data);
       }
-      FS.writeFile("/user/" + path, data);
+    } catch (e) {  // "a" and "a/b" both, ".", a NUL: the folder cannot be written as it is
+      clear("/user");
+      listScripts();
+      return "refused: the folder cannot be written as it is (at " + JSON.stringify(at) + ")";
     }
     listScripts();
     return "";
@@ -378,15 +457,25 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     takeFiles(out.map(([p, f]) => [strip ? p.slice(p.indexOf("/") + 1) : p, f]), strip ? [...top][0] : "dropped");
   };
 
-  // Edits kept from an earlier visit come back before anything is drawn.
+  // Edits kept from an earlier visit come back before anything is drawn. A
+  // refused lesson is said and nothing named in the query runs: its paths
+  // were the lesson's.
+  let lesson = loaded.lesson;
+  const refused = loaded.refused || (lesson ? mountUser(lesson.files) : "");
+  if (refused) lesson = null;
   if (lesson) {
-    const why = mountUser(Object.entries(lesson.files).map(([p, b]) => [p, base64Bytes(b)]));
-    if (why) refuse(why);
-    else { editor.setFolder("lesson:" + (lesson.name || lessonUrl || document.title)); editor.restoreDrafts("/user"); }
+    editor.setFolder("lesson:" + (lesson.name || lessonUrl || document.title));
+    editor.restoreDrafts("/user");
   } else {
     listScripts();
     editor.setFolder("bundled");
     editor.restoreDrafts("/lesson");
+  }
+  if (refused) {
+    refuse(refused);
+    verdict.dataset.lesson = "refused";
+    document.body.dataset.ready = "1";
+    return;
   }
   // A lesson opened with no script named draws its first script.
   if (lesson && !query.get("check") && !query.get("render") && !query.get("view") && select.length)
@@ -405,4 +494,11 @@ Promise.all([createGlimmer(moduleOptions), lessonUrl ? loadLessonScript(lessonUr
     runView(query.get("view"), w, h, query.get("set") || "");
   }
   document.body.dataset.ready = "1";
+}).catch((e) => {
+  // Said, not left as a blank page (from disk, the module's .wasm needs
+  // --allow-file-access-from-files or a packed lesson).
+  const verdict = document.getElementById("verdict");
+  verdict.className = "bad";
+  verdict.textContent = "the page could not start: " + e + (location.protocol === "file:"
+    ? " (opened from disk, Chromium needs --allow-file-access-from-files; or serve the folder, or pack the lesson with --html)" : "");
 });

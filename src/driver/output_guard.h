@@ -1,0 +1,18 @@
+// An output must never be one of the script's own inputs: `-o shader.frag`
+// or `--dump 6=grid.png` over the texture it reads would destroy a
+// student's work with no way back (issue 30). Checked after the plan has
+// resolved every file, before anything is drawn or written.
+#pragma once
+#include <string>
+
+#include "plan/plan.h"
+
+namespace glimmer {
+
+// The input `output` would overwrite (the script, a shader, an image or a
+// model, as the script names it), or "" when it names none. Files are
+// compared as the system sees them (device and inode), so another spelling,
+// a symlink or a hard link to an input is caught too.
+std::string inputOverwrittenBy(const Plan& plan, const std::string& output);
+
+}  // namespace glimmer

@@ -1,0 +1,85 @@
+#include "shader/glsl_scan.h"
+
+namespace glimmer {
+namespace {
+
+size_t skipBlanks(std::string_view s, size_t i) {
+    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
+    return i;
+}
+
+bool isDigit(char c) { return c >= '0' && c <= '9'; }
+
+// Reads the directive's words after "#version" on line `l` (from `p`).
+void readVersion(std::string_view l, size_t p, GlslVersion& v) {
+    p = skipBlanks(l, p);
+    long long n = 0;
+    size_t digits = p;
+    while (p < l.size() && isDigit(l[p])) {
+        n = n * 10 + (l[p] - '0');
+        if (n > kMaxGlslVersionNumber) n = kMaxGlslVersionNumber;  // saturate: never overflow
+        ++p;
+    }
+    if (p > digits) v.number = int(n);
+    else v.wellFormed = false;
+    p = skipBlanks(l, p);
+    size_t q = p;
+    while (q < l.size() && isGlslWordChar(l[q])) ++q;
+    v.profile = std::string(l.substr(p, q - p));
+    q = skipBlanks(l, q);
+    if (q < l.size() && l.compare(q, 2, "//") != 0) v.wellFormed = false;
+}
+
+}  // namespace
+
+bool isWholeWordAt(std::string_view text, size_t at, size_t length) {
+    if (at > text.size() || length > text.size() - at) return false;
+    bool before = at > 0 && isGlslWordChar(text[at - 1]);
+    bool after = at + length < text.size() && isGlslWordChar(text[at + length]);
+    return !before && !after;
+}
+
+GlslVersion glslVersionOf(std::string_view s) {
+    GlslVersion v;
+    size_t lineStart = 0;
+    int line = 1;
+    bool inBlockComment = false;
+    while (lineStart <= s.size()) {
+        size_t end = s.find('\n', lineStart);
+        if (end == std::string_view::npos) end = s.size();
+        std::string_view l = s.substr(lineStart, end - lineStart);
+        if (!inBlockComment) {
+            size_t p = skipBlanks(l, 0);
+            if (p < l.size() && l[p] == '#') {
+                p = skipBlanks(l, p + 1);
+                if (l.compare(p, 7, "version") == 0 && (p + 7 == l.size() || !isGlslWordChar(l[p + 7]))) {
+                    readVersion(l, p + 7, v);
+                    v.line = line;
+                    return v;
+                }
+            }
+        }
+        // Only a block comment may hide a #version line.
+        for (size_t k = 0; k + 1 < l.size(); ++k) {
+            if (!inBlockComment && l[k] == '/' && l[k + 1] == '/') break;
+            if (!inBlockComment && l[k] == '/' && l[k + 1] == '*') inBlockComment = true, ++k;
+            else if (inBlockComment && l[k] == '*' && l[k + 1] == '/') inBlockComment = false, ++k;
+        }
+        lineStart = end + 1;
+        ++line;
+    }
+    return v;
+}
+
+std::string firstWordWithPrefix(std::string_view text, std::string_view prefix) {
+    if (prefix.empty()) return {};
+    for (size_t at = text.find(prefix); at != std::string_view::npos; at = text.find(prefix, at + 1)) {
+        if (at > 0 && isGlslWordChar(text[at - 1])) continue;  // inside a longer word
+        size_t end = at + prefix.size();
+        while (end < text.size() && isGlslWordChar(text[end])) ++end;
+        if (end > at + prefix.size()) return std::string(text.substr(at, end - at));
+    }
+    return {};
+}
+
+}  // namespace glimmer

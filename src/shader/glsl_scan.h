@@ -1,0 +1,48 @@
+// The small pieces of GLSL scanning every shader rewrite and check needs,
+// written once: what a word character is, the #version directive, and the
+// words of a text. Each is one bounded loop over the text, never a regular
+// expression: std::regex recurses per character and overflowed the stack on
+// a 30,000-character line (issue 30), and a student's shader is untrusted.
+//
+// Contract:
+//   - Nothing here allocates more than the text it returns, recurses, or
+//     throws; every input, however long or odd, gets an answer.
+//   - Numbers are saturated, never converted with std::stoi (which throws on
+//     "#version 99999999999999999999").
+#pragma once
+#include <string>
+#include <string_view>
+
+namespace glimmer {
+
+// A letter, digit or underscore: the characters of a GLSL identifier.
+inline bool isGlslWordChar(char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
+}
+
+// A letter or underscore: what may start a GLSL identifier.
+inline bool isGlslWordStart(char c) { return isGlslWordChar(c) && !(c >= '0' && c <= '9'); }
+
+// Whether `word` stands at `at` of `text` as a whole word (no word character
+// on either side).
+bool isWholeWordAt(std::string_view text, size_t at, size_t length);
+
+// The shader's #version directive: its number (110 when none; saturated at
+// kMaxGlslVersionNumber), its profile word ("" when none) and its 1-based line
+// (0 when none). Only the first directive counts, as for the compiler; one in
+// a block comment does not. `wellFormed` is false when something other than
+// blanks or a // comment follows the profile word.
+constexpr int kMaxGlslVersionNumber = 999999;
+struct GlslVersion {
+    int number = 110;
+    std::string profile;
+    int line = 0;
+    bool wellFormed = true;
+};
+GlslVersion glslVersionOf(std::string_view source);
+
+// The first whole word of `text` that starts with `prefix` ("gl_" finds
+// "gl_Vertex" in "'gl_Vertex' : undeclared identifier"); "" when none.
+std::string firstWordWithPrefix(std::string_view text, std::string_view prefix);
+
+}  // namespace glimmer

@@ -1,0 +1,72 @@
+// The one GLSL scanner (shader/glsl_scan.h): the #version directive and
+// words, on ordinary and hostile text.
+#include "shader/glsl_scan.h"
+
+#include <gtest/gtest.h>
+
+namespace glimmer {
+namespace {
+
+TEST(GlslScan, ReadsTheVersionItsProfileAndLine) {
+    GlslVersion v = glslVersionOf("// a shader\n  #  version 330 compatibility // why\nvoid main() {}\n");
+    EXPECT_EQ(v.number, 330);
+    EXPECT_EQ(v.profile, "compatibility");
+    EXPECT_EQ(v.line, 2);
+    EXPECT_TRUE(v.wellFormed);
+}
+
+TEST(GlslScan, NoDirectiveIsGlsl110OnLineZero) {
+    GlslVersion v = glslVersionOf("void main() {}\n");
+    EXPECT_EQ(v.number, 110);
+    EXPECT_EQ(v.line, 0);
+    EXPECT_EQ(v.profile, "");
+}
+
+TEST(GlslScan, ADirectiveInABlockCommentDoesNotCount) {
+    GlslVersion v = glslVersionOf("/* old:\n#version 120\n*/\n#version 150\n");
+    EXPECT_EQ(v.number, 150);
+    EXPECT_EQ(v.line, 4);
+    EXPECT_EQ(v.profile, "");
+}
+
+TEST(GlslScan, AHugeNumberSaturatesInsteadOfThrowing) {
+    GlslVersion v = glslVersionOf("#version 99999999999999999999\n");
+    EXPECT_EQ(v.number, kMaxGlslVersionNumber);
+    EXPECT_EQ(v.line, 1);
+}
+
+TEST(GlslScan, JunkAfterTheProfileOrNoNumberIsNotWellFormed) {
+    EXPECT_FALSE(glslVersionOf("#version 150 core junk\n").wellFormed);
+    EXPECT_FALSE(glslVersionOf("#version core\n").wellFormed);
+    EXPECT_TRUE(glslVersionOf("#version 150\r\n").wellFormed);
+    // "#versionx" is another directive, not #version.
+    EXPECT_EQ(glslVersionOf("#versionx 300\n").line, 0);
+}
+
+TEST(GlslScan, AThirtyThousandCharacterLineIsReadInOnePass) {
+    GlslVersion v = glslVersionOf("#version 150 // " + std::string(30000, 'x') + "\n");
+    EXPECT_EQ(v.number, 150);
+    EXPECT_TRUE(v.wellFormed);
+}
+
+TEST(GlslScan, FindsTheFirstWholeWordWithAPrefix) {
+    EXPECT_EQ(firstWordWithPrefix("'gl_Vertex' : undeclared identifier", "gl_"), "gl_Vertex");
+    EXPECT_EQ(firstWordWithPrefix("my_gl_x and gl_Color", "gl_"), "gl_Color");  // not inside a word
+    EXPECT_EQ(firstWordWithPrefix("gl_ alone", "gl_"), "");
+    EXPECT_EQ(firstWordWithPrefix("nothing here", "gl_"), "");
+    const std::string huge = "gl_" + std::string(200000, 'a');
+    EXPECT_EQ(firstWordWithPrefix("`" + huge + "' undeclared", "gl_"), huge);
+}
+
+TEST(GlslScan, WholeWordsAndWordCharacters) {
+    EXPECT_TRUE(isWholeWordAt("uniform float uAdd;", 14, 4));
+    EXPECT_FALSE(isWholeWordAt("uniform float uAdder;", 14, 4));
+    EXPECT_FALSE(isWholeWordAt("abc", 2, 5));  // past the end
+    EXPECT_TRUE(isGlslWordChar('_'));
+    EXPECT_FALSE(isGlslWordChar('\xe9'));  // a byte of UTF-8 is never part of a GLSL identifier
+    EXPECT_TRUE(isGlslWordStart('a'));
+    EXPECT_FALSE(isGlslWordStart('7'));
+}
+
+}  // namespace
+}  // namespace glimmer
