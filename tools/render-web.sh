@@ -55,7 +55,9 @@ dom = open(sys.argv[1], encoding="utf-8", errors="replace").read()
 exit_ = re.search(r'id="verdict"[^>]*data-exit="(\d+)"', dom) or re.search(r'data-exit="(\d+)"[^>]*id="verdict"', dom)
 diag = re.search(r'<pre id="diagnostics">(.*?)</pre>', dom, re.S)
 if diag:
-    sys.stderr.write(html.unescape(diag.group(1)))
+    # The page marks each file:line:col as a link (<span class="jump">):
+    # the text, as glimmer render prints it, without the page's markup.
+    sys.stderr.write(html.unescape(re.sub(r"<[^>]*>", "", diag.group(1))))
 if not exit_:
     sys.stderr.write("render-web: the page gave no result (did the module load?)\n")
     sys.exit(1)

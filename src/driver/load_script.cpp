@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "driver/console.h"
+#include "driver/error_cascades.h"
 #include "driver/fold_diagnostics.h"
 #include "lang/comment_notes.h"
 #include "lang/parser.h"
@@ -53,7 +54,16 @@ void printDiagnostics(const Diagnostics& diags, const SourceTexts& sources, std:
                                  v != Verbosity::Quiet, kMaxPrintedDiagnostics, notShown);
     for (const auto& text : lines) out << text << (text.empty() || text.back() != '\n' ? "\n" : "");
     if (notShown > 0) out << fmt::format("... {} more diagnostics not shown\n", notShown);
-    int e = diags.errorCount(), w = diags.warningCount();
+    // Causes are counted, not the driver's lines: one undeclared sampler is
+    // one error, not 51 (driver/error_cascades.h; the note above says how
+    // many follow from it).
+    const std::vector<int> causes = errorCauses(diags.all());
+    int e = 0, w = 0;
+    for (size_t i = 0; i < diags.all().size(); ++i) {
+        if (causes[i] >= 0) continue;
+        e += diags.all()[i].severity == Severity::Error;
+        w += diags.all()[i].severity == Severity::Warning;
+    }
     if (e > 0 && v == Verbosity::Quiet) out << fmt::format("{} error{}\n", e, e == 1 ? "" : "s");
     else if (e > 0) out << fmt::format("{} error{}, {} warning{}\n", e, e == 1 ? "" : "s", w, w == 1 ? "" : "s");
 }

@@ -378,7 +378,8 @@ std::vector<UnsetUniform> Renderer::unsetUniforms(int program) const {
     if (program < 0 || size_t(program) >= programs_.size() || !programs_[size_t(program)] ||
         size_t(program) >= plan_->programs.size())
         return {};
-    return glimmer::unsetUniforms(plan_->programs[size_t(program)], programs_[size_t(program)]->uniforms);
+    const Program& p = *programs_[size_t(program)];
+    return glimmer::unsetUniforms(plan_->programs[size_t(program)], p.uniforms, p.initialized);
 }
 
 Renderer::UniformKind Renderer::uniformKind(int program, const std::string& name) const {

@@ -47,6 +47,7 @@ struct Renderer::Program {
     // a Clear such a draw covers can be skipped (plan/hidden_clears.h).
     bool paintsAllItCovers = false;
     std::string name;
+    std::set<std::string> initialized;  // uniforms its shaders give a value of their own (`uniform float a = 1.;`)
 };
 
 struct Renderer::MeshBuffers {

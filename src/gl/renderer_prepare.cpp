@@ -2,6 +2,7 @@
 // programs, making render targets and the screen.
 #include "gl/renderer_internal.h"
 
+#include "shader/uniform_initializers.h"
 #include "shader/coverage_hints.h"
 #include "gl/clear_texture.h"
 #include "gl/unset_uniforms.h"
@@ -161,9 +162,12 @@ void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics
                            : st.kind == ShaderStage::Kind::Fragment ? !mayDiscard(text)
                                                                     : false;
             p->paintsAllItCovers = p->paintsAllItCovers && vouched;
+            UniformInitializers own = takeUniformInitializers(text);
+            for (const auto* list : {&own.values, &own.unreadable})
+                for (const auto& u : *list) p->initialized.insert(u.name);
         }
         checkUniformSettings(decl, p->uniforms, file, diags);
-        warnUnsetUniforms(decl, p->uniforms, assets.shaderTexts[i], file, diags);
+        warnUnsetUniforms(decl, p->uniforms, p->initialized, assets.shaderTexts[i], file, diags);
         for (const auto& u : p->uniforms) {
             const UniformSetting* setting = nullptr;
             for (const auto& st : decl.uniforms)

@@ -147,6 +147,34 @@ std::string withCompatibilityProfile(const std::string& text, int line) {
     return text.substr(0, at) + directive + (end == std::string::npos ? "" : text.substr(end));
 }
 
+// The warning for a local const whose initialiser is not constant (Mesa's `message`).
+std::string localConstAccepted(const std::string& message) {
+    return fmt::format("a local const set from a non-constant expression ({}): accepted, as GLSL 4.20 allows and "
+                       "NVIDIA does in any version; GL_ARB_shading_language_420pack turned on for this shader",
+                       constName(message));
+}
+
+// `text` with the last whole word 'const' before `loc` on its line blanked
+// out (columns keep their places); unchanged when there is none.
+std::string withoutConstBefore(std::string text, SourceLoc loc) {
+    size_t start = 0;
+    for (int n = 1; n < loc.line && start != std::string::npos; ++n) {
+        start = text.find('\n', start);
+        if (start != std::string::npos) ++start;
+    }
+    if (start == std::string::npos) return text;
+    size_t end = std::min(text.find('\n', start), start + size_t(std::max(loc.col - 1, 0)));
+    if (end == std::string::npos) end = text.size();
+    for (size_t at = text.rfind("const", end); at != std::string::npos && at >= start;
+         at = at == 0 ? std::string::npos : text.rfind("const", at - 1)) {
+        if (isWholeWordAt(text, at, 5)) {
+            text.replace(at, 5, "     ");
+            break;
+        }
+    }
+    return text;
+}
+
 // The first compatibility built-in an error of the log names as undeclared
 // ("gl_Vertex"); "" when none does.
 std::string undeclaredBuiltin(const Diagnostics& said) {
@@ -180,12 +208,61 @@ Compiled compileStage(const GlApi& gl, const ShaderStage& stage, const std::stri
     return c;
 }
 
+// Sets the uniforms a translation took the initialisers of, as a desktop
+// driver would have from the text: once, when the program is made; what the
+// script sets is uploaded over them each frame.
+void setInitialValues(const GlApi& gl, unsigned program, const std::vector<UniformInitializer>& values) {
+    if (values.empty()) return;
+    gl.UseProgram(program);
+    for (const auto& u : values) {
+        GLint at = gl.GetUniformLocation(program, u.name.c_str());
+        if (at < 0 || u.values.empty() || u.values.size() > 4) continue;
+        const GLsizei n = GLsizei(u.values.size());
+        if (u.type.find("vec") == std::string::npos ? u.type != "float" : u.type[0] != 'v') {
+            std::vector<GLint> ints(u.values.begin(), u.values.end());
+            (n == 1 ? gl.Uniform1iv : n == 2 ? gl.Uniform2iv : n == 3 ? gl.Uniform3iv : gl.Uniform4iv)(at, 1, ints.data());
+        } else {
+            (n == 1 ? gl.Uniform1fv : n == 2 ? gl.Uniform2fv : n == 3 ? gl.Uniform3fv : gl.Uniform4fv)(at, 1,
+                                                                                                 u.values.data());
+        }
+    }
+    gl.UseProgram(0);
+}
+
+// Links `shaders` into a new program; 0 with the driver's log in `log`.
+unsigned linkShaders(const GlApi& gl, const std::vector<unsigned>& shaders, std::string& log) {
+    unsigned program = gl.CreateProgram();
+    for (unsigned sh : shaders) gl.AttachShader(program, sh);
+    gl.BindAttribLocation(program, kTangentLocation, "Tangent");
+    bindBuiltinAttributes(gl, program);  // glimmer_Vertex and the others, where declared
+    gl.LinkProgram(program);
+    GLint status = 0;
+    gl.GetProgramiv(program, GL_LINK_STATUS, &status);
+    if (status) return program;
+    log = infoLog(gl, program, true);
+    gl.DeleteProgram(program);
+    return 0;
+}
+
 }  // namespace
 
 unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                       const std::vector<std::optional<std::string>>& stageTexts, const std::string& scriptFile,
                       Diagnostics& diags) {
     std::vector<unsigned> shaders;
+    // Desktop stages that say `#version N` (N >= 150) with no profile while
+    // compiled as they are: the core profile, whose gl_PerVertex differs
+    // from the compatibility one (index into `shaders`, the stage, its text).
+    struct CoreStage {
+        size_t shader;
+        const ShaderStage* stage;
+        const std::string* text;
+        std::string prelude;
+        int line, version;
+    };
+    std::vector<CoreStage> coreStages;
+    bool anyCompatibility = false;
+    std::vector<UniformInitializer> initialValues;  // the page: uniform initialisers taken out in translation
     bool ok = true;
     for (size_t k = 0; k < decl.stages.size(); ++k) {
         const ShaderStage& stage = decl.stages[k];
@@ -204,6 +281,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                 ok = false;
                 continue;
             }
+            initialValues.insert(initialValues.end(), t.initialValues.begin(), t.initialValues.end());
             Compiled c = compileStage(gl, stage, t.text, "", scriptFile);
             // The lines are the translation's, not the user's: the driver's
             // word against the file, and only when it refuses (its warnings
@@ -223,12 +301,14 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
         // scripts rely on it. Compiled again with the word added (lines keep
         // their numbers), and said.
         int version = 0;
+        bool madeCompatibility = false;
         if (int line = !c.status ? profilelessVersionLine(text, version) : 0; line > 0) {
             if (std::string builtin = undeclaredBuiltin(c.said); !builtin.empty()) {
                 Compiled again = compileStage(gl, stage, withCompatibilityProfile(text, line), prelude, scriptFile);
                 if (again.status) {
                     gl.DeleteShader(c.shader);
                     c = std::move(again);
+                    madeCompatibility = true;
                     diags.warning(stage.path, {line, 1},
                                   fmt::format("'#version {0}' with no profile is the core profile, which has no {1}: "
                                               "compiled as '#version {0} compatibility', as NVIDIA's driver does; "
@@ -253,30 +333,60 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                 if (again.status) {
                     gl.DeleteShader(c.shader);
                     c = std::move(again);
-                    diags.warning(stage.path, at,
-                                  fmt::format("a local const set from a non-constant expression ({}): accepted, as "
-                                              "GLSL 4.20 allows and NVIDIA does in any version; "
-                                              "GL_ARB_shading_language_420pack turned on for this shader",
-                                              constName(what)));
+                    diags.warning(stage.path, at, localConstAccepted(what));
                 } else {
-                    // Outside any function it stays an error, in every
+                    // Outside any function it stays an error in every
                     // version (the extension leaves the same error on the
-                    // same line): say the cause and the one-word fix.
+                    // same line). NVIDIA's driver accepted it anyway, and
+                    // the author saw a picture: the 'const' is dropped on
+                    // each such line (blanked, so columns stay), which makes
+                    // it a global set when the shader starts, as NVIDIA did.
                     gl.DeleteShader(again.shader);
-                    bool stays = false;
+                    std::vector<Diagnostic> globals;
                     for (const auto& d : again.said.all())
-                        stays = stays || (d.loc.line == at.line && d.message == what);
-                    if (stays)
-                        hint = Diagnostic{Severity::Note, stage.path, at,
-                                          fmt::format("{} is a const outside any function: its initialiser must "
-                                                      "be a constant expression in every GLSL version (4.20 relaxed "
-                                                      "it only inside functions); remove 'const' and it is set when "
-                                                      "the shader starts",
-                                                      constName(what)),
-                                          false};
+                        if (d.message.rfind(kConstInitializer, 0) == 0) globals.push_back(d);
+                    std::string relaxed = text;
+                    for (const auto& d : globals) relaxed = withoutConstBefore(relaxed, d.loc);
+                    Compiled third = globals.empty() ? Compiled{}
+                                                     : compileStage(gl, stage, relaxed, prelude + kLocalConstExtension,
+                                                                    scriptFile);
+                    if (third.status) {
+                        gl.DeleteShader(c.shader);
+                        // A local one beside them was accepted by the extension: said as above.
+                        for (const auto& d : c.said.all())
+                            if (d.message.rfind(kConstInitializer, 0) == 0 &&
+                                std::none_of(globals.begin(), globals.end(),
+                                             [&](const Diagnostic& g) { return g.loc.line == d.loc.line; })) {
+                                diags.warning(stage.path, d.loc, localConstAccepted(d.message));
+                                break;
+                            }
+                        c = std::move(third);
+                        for (const auto& d : globals)
+                            diags.warning(stage.path, d.loc,
+                                          fmt::format("{} is a const outside any function set from a non-constant "
+                                                      "expression: 'const' dropped, so it is set when the shader "
+                                                      "starts, as NVIDIA's driver does; remove 'const' to run "
+                                                      "everywhere",
+                                                      constName(d.message)));
+                    } else {
+                        if (!globals.empty()) gl.DeleteShader(third.shader);
+                        bool stays = false;
+                        for (const auto& d : globals) stays = stays || (d.loc.line == at.line && d.message == what);
+                        if (stays)
+                            hint = Diagnostic{Severity::Note, stage.path, at,
+                                              fmt::format("{} is a const outside any function: its initialiser must "
+                                                          "be a constant expression in every GLSL version (4.20 "
+                                                          "relaxed it only inside functions); remove 'const' and it "
+                                                          "is set when the shader starts",
+                                                          constName(what)),
+                                              false};
+                    }
                 }
             }
         }
+        if (int v = 0, line = c.status && !madeCompatibility ? profilelessVersionLine(text, v) : 0; line > 0)
+            coreStages.push_back({shaders.size(), &stage, &text, prelude, line, v});
+        anyCompatibility = anyCompatibility || madeCompatibility || glslVersionOf(text).profile == "compatibility";
         unsigned sh = c.shader;
         GLint status = c.status;
         const std::string& log = c.log;
@@ -290,19 +400,37 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
     }
     unsigned program = 0;
     if (ok && !shaders.empty()) {
-        program = gl.CreateProgram();
-        for (unsigned sh : shaders) gl.AttachShader(program, sh);
-        gl.BindAttribLocation(program, kTangentLocation, "Tangent");
-        bindBuiltinAttributes(gl, program);  // glimmer_Vertex and the others, where declared
-        gl.LinkProgram(program);
-        GLint status = 0;
-        gl.GetProgramiv(program, GL_LINK_STATUS, &status);
-        if (!status) {
-            std::string log = infoLog(gl, program, true);
-            diags.error(scriptFile, decl.loc, fmt::format("Program {} does not link: {}", decl.name, log));
-            gl.DeleteProgram(program);
-            program = 0;
+        std::string log;
+        program = linkShaders(gl, shaders, log);
+        // A core stage among compatibility ones: their gl_PerVertex blocks
+        // differ and Mesa refuses the link; NVIDIA's driver links it, as if
+        // the core stage said `compatibility`. Those stages are compiled
+        // again with the word, and the program linked again.
+        if (!program && anyCompatibility && !coreStages.empty()) {
+            std::vector<unsigned> again = shaders;
+            bool compiled = true;
+            for (const CoreStage& core : coreStages) {
+                Compiled c = compileStage(gl, *core.stage, withCompatibilityProfile(*core.text, core.line),
+                                          core.prelude, scriptFile);
+                again[core.shader] = c.shader;
+                compiled = compiled && c.status;
+            }
+            std::string secondLog;
+            if (compiled) program = linkShaders(gl, again, secondLog);
+            for (const CoreStage& core : coreStages) {
+                gl.DeleteShader(program ? shaders[core.shader] : again[core.shader]);
+                if (program) shaders[core.shader] = again[core.shader];
+            }
+            if (program)
+                for (const CoreStage& core : coreStages)
+                    diags.warning(core.stage->path, {core.line, 1},
+                                  fmt::format("'#version {0}' (no profile: core) has another gl_PerVertex than "
+                                              "the compatibility stages: linked as '#version {0} compatibility', as "
+                                              "NVIDIA does; add 'compatibility' to run everywhere",
+                                              core.version));
         }
+        if (!program) diags.error(scriptFile, decl.loc, fmt::format("Program {} does not link: {}", decl.name, log));
+        if (program) setInitialValues(gl, program, initialValues);
     }
     for (unsigned sh : shaders) gl.DeleteShader(sh);
     return program;

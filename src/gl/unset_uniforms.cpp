@@ -28,10 +28,11 @@ std::string example(const std::string& name, const std::string& type) {
 
 }  // namespace
 
-std::vector<UnsetUniform> unsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active) {
+std::vector<UnsetUniform> unsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
+                                        const std::set<std::string>& initialized) {
     std::vector<UnsetUniform> out;
     for (const auto& u : active) {
-        if (isSamplerType(u.type) || builtIn(u.name)) continue;
+        if (isSamplerType(u.type) || builtIn(u.name) || initialized.count(u.name)) continue;
         bool set = false;
         for (const auto& s : decl.uniforms) set = set || s.name == u.name;
         if (set) continue;
@@ -42,9 +43,10 @@ std::vector<UnsetUniform> unsetUniforms(const ProgramDecl& decl, const std::vect
 }
 
 void warnUnsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
+                       const std::set<std::string>& initialized,
                        const std::vector<std::optional<std::string>>& texts, const std::string& scriptFile,
                        Diagnostics& diags) {
-    for (const auto& u : unsetUniforms(decl, active)) {
+    for (const auto& u : unsetUniforms(decl, active, initialized)) {
         // Where its shader declares it: the first stage that does.
         std::string where;
         for (size_t k = 0; k < decl.stages.size() && where.empty(); ++k)

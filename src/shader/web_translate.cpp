@@ -161,7 +161,16 @@ WebTranslation translateForWeb(const WebTranslateInput& in, Diagnostics& diags) 
         out.ok = true;
         return out;
     }
-    CompatRewrite rewritten = rewriteCompatBuiltins(in.text, vertex ? CompatStage::Vertex : CompatStage::Fragment,
+    // Uniform initialisers (GLSL 1.20 on) have no ES 3.00 form: taken out,
+    // same lines and columns, and handed to the renderer to set.
+    UniformInitializers initializers = takeUniformInitializers(in.text);
+    for (const auto& u : initializers.unreadable)
+        diags.error(in.file, {u.line, u.col},
+                    "WebGL 2 has no uniform initialisers, and the page carries only numbers and constructors of "
+                    "them ('vec3(0., .5, 1.)'): set uniform " + u.name + " on its Program line instead");
+    if (!initializers.unreadable.empty()) return out;
+    out.initialValues = std::move(initializers.values);
+    CompatRewrite rewritten = rewriteCompatBuiltins(initializers.text, vertex ? CompatStage::Vertex : CompatStage::Fragment,
                                                     definesOf(in.prelude));
     std::vector<unsigned> spirv;
     if (!compileToSpirv(rewritten, language, in, spirv, diags)) return out;

@@ -23,8 +23,10 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "lang/diagnostics.h"
+#include "shader/uniform_initializers.h"
 
 namespace glimmer {
 
@@ -42,6 +44,10 @@ struct WebTranslateInput {
 struct WebTranslation {
     bool ok = false;
     std::string text;  // GLSL ES 3.00 when ok
+    // `uniform float uY0 = 1.;` has no GLSL ES 3.00 form: the initialisers,
+    // taken out of the text, for the renderer to set once the program links
+    // (shader/uniform_initializers.h).
+    std::vector<UniformInitializer> initialValues;
 };
 
 // Translates one stage; every problem is added to `diags` (nothing throws).

@@ -20,12 +20,6 @@ namespace glimmer_cli {
 namespace {
 namespace fs = std::filesystem;
 
-std::string writeFile(const TempDir& dir, const std::string& name, const std::string& text) {
-    std::string p = dir.file(name);
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-}
-
 std::string readAll(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};

@@ -13,12 +13,6 @@ namespace glimmer_cli {
 namespace {
 namespace fs = std::filesystem;
 
-std::string writeFile(const TempDir& dir, const std::string& name, const std::string& text) {
-    std::string p = dir.file(name);
-    std::ofstream(p, std::ios::binary) << text;
-    return p;
-}
-
 const std::string kData = std::string(GLIMMER_SOURCE_DIR) + "/tests/data/cli/";
 
 RunResult check(const std::string& script) { return runGlimmer({"check", script, "--backend", "osmesa"}); }

@@ -1,5 +1,7 @@
 #include "cli/run_glimmer.h"
 
+#include <gtest/gtest.h>
+
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/resource.h>
@@ -181,6 +183,19 @@ bool readPngSize(const std::string& path, unsigned& width, unsigned& height) {
     width = be32(16);
     height = be32(20);
     return true;
+}
+
+std::string writeFile(const TempDir& dir, const std::string& name, const std::string& text) {
+    std::string p = dir.file(name);
+    std::ofstream(p, std::ios::binary) << text;
+    return p;
+}
+
+glimmer::Image loadPicture(const std::string& path) {
+    glimmer::Image img;
+    std::string why;
+    EXPECT_TRUE(glimmer::loadImage(path, img, why)) << why;
+    return img;
 }
 
 int countOf(const std::string& haystack, const std::string& needle) {

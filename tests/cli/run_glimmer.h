@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "image/image.h"
+
 namespace glimmer_cli {
 
 struct RunResult {
@@ -57,6 +59,13 @@ bool readPngSize(const std::string& path, unsigned& width, unsigned& height);
 
 // How many times `needle` occurs in `haystack`.
 int countOf(const std::string& haystack, const std::string& needle);
+
+// Writes `text` as the file `name` in `dir`; its path.
+std::string writeFile(const TempDir& dir, const std::string& name, const std::string& text);
+
+// A picture glimmer wrote (PNG, BMP, ...), decoded; empty, with a test
+// failure, when it cannot be read.
+glimmer::Image loadPicture(const std::string& path);
 
 // Test data scripts, relative to the repository root: "tests/data/cli/NAME".
 std::string cliData(const std::string& name);

@@ -1,0 +1,2 @@
+#version 400 compatibility
+void main() { gl_Position = gl_Vertex; }

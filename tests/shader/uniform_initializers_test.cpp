@@ -1,0 +1,78 @@
+// Uniform initialisers taken out of a shader for GLSL ES 3.00
+// (shader/uniform_initializers.h): values read, places kept, text blanked.
+#include "shader/uniform_initializers.h"
+
+#include <gtest/gtest.h>
+
+namespace glimmer {
+namespace {
+
+TEST(UniformInitializers, NumbersAndConstructorsAreReadAndBlanked) {
+    const std::string text =
+        "#version 120\n"
+        "uniform float uY0 = 1.;\n"
+        "uniform vec3 uTint = vec3(0., .5, 1.), uOther;\n"
+        "uniform lowp vec4 uAll = vec4(.25);\n"
+        "uniform int uN = -3, uM = 2;\n"
+        "uniform bool uOn = true;\n"
+        "uniform float uPlain;\n";
+    UniformInitializers r = takeUniformInitializers(text);
+    ASSERT_EQ(r.values.size(), 6u);
+    EXPECT_TRUE(r.unreadable.empty());
+    EXPECT_EQ(r.values[0].name, "uY0");
+    EXPECT_EQ(r.values[0].type, "float");
+    EXPECT_EQ(r.values[0].values, std::vector<float>({1.f}));
+    EXPECT_EQ(r.values[0].line, 2);
+    EXPECT_EQ(r.values[0].col, 21);
+    EXPECT_EQ(r.values[1].name, "uTint");
+    EXPECT_EQ(r.values[1].values, std::vector<float>({0.f, .5f, 1.f}));
+    EXPECT_EQ(r.values[2].name, "uAll");
+    EXPECT_EQ(r.values[2].type, "vec4");
+    EXPECT_EQ(r.values[2].values, std::vector<float>(4, .25f));
+    EXPECT_EQ(r.values[3].name, "uN");
+    EXPECT_EQ(r.values[3].values, std::vector<float>({-3.f}));
+    EXPECT_EQ(r.values[4].name, "uM");
+    EXPECT_EQ(r.values[4].type, "int");
+    EXPECT_EQ(r.values[5].values, std::vector<float>({1.f}));
+    EXPECT_EQ(r.text,
+              "#version 120\n"
+              "uniform float uY0     ;\n"
+              "uniform vec3 uTint                   , uOther;\n"
+              "uniform lowp vec4 uAll            ;\n"
+              "uniform int uN     , uM    ;\n"
+              "uniform bool uOn       ;\n"
+              "uniform float uPlain;\n");
+}
+
+TEST(UniformInitializers, CommentsLocalsAndDirectivesAreLeftAlone) {
+    const std::string text =
+        "// uniform float a = 1.;\n"
+        "/* uniform float b = 2.; */\n"
+        "#define uniform_x 3\n"
+        "void main() { float uniformish = 1.; }\n";
+    UniformInitializers r = takeUniformInitializers(text);
+    EXPECT_TRUE(r.values.empty());
+    EXPECT_TRUE(r.unreadable.empty());
+    EXPECT_EQ(r.text, text);
+}
+
+TEST(UniformInitializers, AnExpressionOrArrayIsUnreadableWithItsPlace) {
+    UniformInitializers r = takeUniformInitializers("uniform float k = 2. * 3.;\nuniform float a[2] = float[2](1., 2.);\n"
+                                                    "uniform vec2 v = vec3(1., 2., 3.);\n");
+    EXPECT_TRUE(r.values.empty());
+    ASSERT_EQ(r.unreadable.size(), 3u);
+    EXPECT_EQ(r.unreadable[0].name, "k");
+    EXPECT_EQ(r.unreadable[0].line, 1);
+    EXPECT_EQ(r.unreadable[0].col, 19);
+    EXPECT_EQ(r.unreadable[1].name, "a");
+    EXPECT_EQ(r.unreadable[2].name, "v");
+}
+
+TEST(UniformInitializers, AnUnendedStatementOrBlockStopsQuietly) {
+    EXPECT_TRUE(takeUniformInitializers("uniform float k = 1.").values.empty());
+    EXPECT_TRUE(takeUniformInitializers("uniform Block { float x; };").values.empty());
+    EXPECT_TRUE(takeUniformInitializers(std::string(100000, '(')).values.empty());
+}
+
+}  // namespace
+}  // namespace glimmer
