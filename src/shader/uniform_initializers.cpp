@@ -1,8 +1,8 @@
 #include "shader/uniform_initializers.h"
 
-#include <cstdlib>
 
 #include "shader/glsl_scan.h"
+#include "util/numbers.h"
 
 namespace glimmer {
 namespace {
@@ -34,10 +34,11 @@ bool number(std::string_view s, float& out) {
     }
     if (!s.empty() && (s.back() == 'f' || s.back() == 'F' || s.back() == 'u' || s.back() == 'U')) s.remove_suffix(1);
     if (s.empty() || s.size() > 64) return false;
-    std::string copy(s);
-    char* end = nullptr;
-    out = std::strtof(copy.c_str(), &end);
-    return end == copy.c_str() + copy.size();
+    double v = 0;  // never strtof: in a decimal-comma locale it stops at the '.'
+    ParsedNumber p = parseDouble(s.data(), s.data() + s.size(), v);
+    if (p.ec != std::errc() || p.end != s.data() + s.size() || !(v >= -3.4e38 && v <= 3.4e38)) return false;
+    out = float(v);
+    return true;
 }
 
 // The values of `init` for a `type`; false when it is not a plain constant.

@@ -4,6 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include <clocale>
+
 namespace glimmer {
 namespace {
 
@@ -42,6 +44,19 @@ TEST(UniformInitializers, NumbersAndConstructorsAreReadAndBlanked) {
               "uniform int uN     , uM    ;\n"
               "uniform bool uOn       ;\n"
               "uniform float uPlain;\n");
+}
+
+// Read the same in a decimal-comma locale (.ci/run runs every test program
+// again in German): strtof would stop at the '.'.
+TEST(UniformInitializers, ValuesDoNotDependOnTheLocale) {
+    const char* before = std::setlocale(LC_NUMERIC, nullptr);
+    const std::string saved = before ? before : "C";
+    const bool german = std::setlocale(LC_NUMERIC, "de_DE.UTF-8") != nullptr;
+    UniformInitializers r = takeUniformInitializers("uniform vec2 v = vec2(0.5, -1.25);\n");
+    std::setlocale(LC_NUMERIC, saved.c_str());
+    if (!german) GTEST_SKIP() << "no de_DE.UTF-8 locale on this machine (tools/install-deps.sh makes it)";
+    ASSERT_EQ(r.values.size(), 1u);
+    EXPECT_EQ(r.values[0].values, std::vector<float>({.5f, -1.25f}));
 }
 
 TEST(UniformInitializers, CommentsLocalsAndDirectivesAreLeftAlone) {
