@@ -196,6 +196,47 @@ TEST(CliGrade, ResumeGradesOnlyWhatIsMissingAndEndsWithTheSameGrades) {
                              "without --resume, or into another -o\n");
 }
 
+// Issue 26: resuming is sound only for the same grading. Another solution
+// (the same rings, copied to another folder), other thresholds or the
+// sandbox turned off would mix two gradings in one report: each is refused
+// before anything is graded, and the folder is left as it was.
+TEST(CliGrade, ResumeWithAnotherSolutionThresholdsOrSandboxIsRefused) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class", out = dir.path() / "out", other = dir.path() / "other";
+    student(cls / "ann", readAll(kSolution / "rings.frag"));
+    auto first = runGlimmer(gradeArgs(cls, out), 120);
+    ASSERT_EQ(first.exitCode, 0) << first.err;
+    fs::create_directories(other);
+    for (const char* f : {"rings.glib", "rings.frag", "st.vert"}) fs::copy_file(kSolution / f, other / f);
+    const std::string header = readAll(out / "grading.txt"), records = readAll(out / "grades.jsonl");
+    ASSERT_NE(records.find("\"student\": \"ann\""), std::string::npos) << records;
+    auto resume = [&](const std::vector<std::string>& extra) {
+        auto v = gradeArgs(cls, out);
+        v.push_back("--resume");
+        v.insert(v.end(), extra.begin(), extra.end());
+        return v;
+    };
+    auto anotherSolution = resume({});
+    ASSERT_EQ(anotherSolution[2], "--reference");
+    anotherSolution[3] = (other / "rings.glib").string();
+    const std::string refused = "glimmer: error: --resume: " + out.string() +
+                                " was graded with another solution, settings, thresholds or sandbox; grade it "
+                                "again without --resume, or into another -o\n";
+    const std::string noSandbox = "glimmer: warning: --no-sandbox: submissions may read any file this user can read\n";
+    for (const auto& [args, said] : std::vector<std::pair<std::vector<std::string>, std::string>>{
+             {anotherSolution, refused},
+             {resume({"--pass-ssim", "0.9"}), refused},
+             {resume({"--pass-psnr", "25"}), refused},
+             {resume({"--look-ssim", "0.5"}), refused},
+             {resume({"--no-sandbox"}), noSandbox + refused}}) {
+        auto r = runGlimmer(args, 120);
+        EXPECT_EQ(r.exitCode, 2) << r.err;
+        EXPECT_EQ(r.err, said);
+        EXPECT_EQ(readAll(out / "grading.txt"), header);
+        EXPECT_EQ(readAll(out / "grades.jsonl"), records);
+    }
+}
+
 int lineCount(const fs::path& file) {
     int n = 0;
     for (char c : readAll(file)) n += c == '\n';

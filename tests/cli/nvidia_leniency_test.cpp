@@ -23,6 +23,20 @@ std::string renderedSaying(const std::string& script, const std::string& out) {
     return r.err.substr(0, r.err.find("wrote "));
 }
 
+// Renders `core` and `compat` at 16x16: `core` says exactly `warning`,
+// `compat` warns of nothing, and both draw the same pixels (uK = .5 in red).
+void expectTheSamePictureAsCompatibility(const TempDir& dir, const std::string& core, const std::string& compat,
+                                         const std::string& warning) {
+    EXPECT_EQ(renderedSaying(core, dir.file("core.png")), warning);
+    auto same = runGlimmer({"render", compat, "-o", dir.file("compat.png"), "--size", "16x16", "--backend", "osmesa"});
+    ASSERT_EQ(same.exitCode, 0) << same.err;
+    EXPECT_EQ(same.err.find("warning"), std::string::npos) << same.err;
+    glimmer::Image a = loadPicture(dir.file("core.png")), b = loadPicture(dir.file("compat.png"));
+    ASSERT_EQ(a.u8.size(), 16u * 16u * 4u);
+    EXPECT_EQ(a.u8, b.u8);
+    EXPECT_EQ(a.u8[(8 * 16 + 8) * 4 + 0], 128);
+}
+
 TEST(CliNvidiaLeniency, ALocalConstFromAUniformIsAcceptedAndSaidSo) {
     TempDir dir;
     const std::string shader = cliData("const_local.frag");
@@ -96,26 +110,12 @@ TEST(CliNvidiaLeniency, ACoreStageAmongCompatibilityOnesLinksAsCompatibility) {
 TEST(CliNvidiaLeniency, ACoreVersionWithCompatibilityBuiltinsCompilesAsCompatibilityAndSaysSo) {
     TempDir dir;
     const std::string vert = cliData("core_version.vert");
-    auto r = runGlimmer({"render", cliData("core_version.glib"), "-o", dir.file("core.png"), "--size", "16x16",
-                         "--backend", "osmesa"});
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(r.err.substr(0, r.err.find("wrote ")),
-              vert + ":1:1: warning: '#version 400' with no profile is the core profile, which has no "
-                     "gl_MultiTexCoord0: compiled as '#version 400 compatibility', as NVIDIA's driver does; write "
-                     "'compatibility' after 400 to run everywhere\n"
-                     "#version 400\n"
-                     "^\n");
     // The picture is the one of the same shaders saying 'compatibility'.
-    auto same = runGlimmer({"render", cliData("core_version_compat.glib"), "-o", dir.file("compat.png"), "--size",
-                            "16x16", "--backend", "osmesa"});
-    ASSERT_EQ(same.exitCode, 0) << same.err;
-    EXPECT_EQ(same.err.find("warning"), std::string::npos) << same.err;
-    glimmer::Image core, compat;
-    std::string why;
-    ASSERT_TRUE(glimmer::loadImage(dir.file("core.png"), core, why)) << why;
-    ASSERT_TRUE(glimmer::loadImage(dir.file("compat.png"), compat, why)) << why;
-    EXPECT_EQ(core.u8, compat.u8);
-    EXPECT_EQ(core.u8[(8 * 16 + 8) * 4 + 0], 128);  // uK = .5 in red
+    expectTheSamePictureAsCompatibility(dir, cliData("core_version.glib"), cliData("core_version_compat.glib"),
+                                        vert + ":1:1: warning: '#version 400' with no profile is the core profile, "
+                                               "which has no gl_MultiTexCoord0: compiled as '#version 400 "
+                                               "compatibility', as NVIDIA's driver does; write 'compatibility' after "
+                                               "400 to run everywhere\n#version 400\n^\n");
 }
 
 // Issue 26: the core profile starts at GLSL 1.50, so '#version 150' with no
@@ -134,25 +134,12 @@ TEST(CliNvidiaLeniency, AtVersion150ItselfTheCoreVersionCompilesAsCompatibility)
     for (const char* name : {"core", "compat"})
         std::ofstream(dir.file(std::string(name) + ".glib"))
             << "Ortho -1 1 -1 1\nVertex " << name << ".vert\nFragment k.frag\nProgram P uK <0. .5 1.>\nQuadXY 0 1\n";
-    auto r = runGlimmer({"render", dir.file("core.glib"), "-o", dir.file("core.png"), "--size", "16x16", "--backend",
-                         "osmesa"});
-    ASSERT_EQ(r.exitCode, 0) << r.err;
-    EXPECT_EQ(r.err.substr(0, r.err.find("wrote ")),
-              dir.file("core.vert") + ":1:1: warning: '#version 150' with no profile is the core profile, which has "
-                                      "no gl_MultiTexCoord0: compiled as '#version 150 compatibility', as NVIDIA's "
-                                      "driver does; write 'compatibility' after 150 to run everywhere\n"
-                                      "#version 150\n"
-                                      "^\n");
-    auto same = runGlimmer({"render", dir.file("compat.glib"), "-o", dir.file("compat.png"), "--size", "16x16",
-                            "--backend", "osmesa"});
-    ASSERT_EQ(same.exitCode, 0) << same.err;
-    EXPECT_EQ(same.err.find("warning"), std::string::npos) << same.err;
-    glimmer::Image core, compat;
-    std::string why;
-    ASSERT_TRUE(glimmer::loadImage(dir.file("core.png"), core, why)) << why;
-    ASSERT_TRUE(glimmer::loadImage(dir.file("compat.png"), compat, why)) << why;
-    EXPECT_EQ(core.u8, compat.u8);
-    EXPECT_EQ(core.u8[(8 * 16 + 8) * 4 + 0], 128);  // uK = .5 in red
+    expectTheSamePictureAsCompatibility(dir, dir.file("core.glib"), dir.file("compat.glib"),
+                                        dir.file("core.vert") + ":1:1: warning: '#version 150' with no profile is the "
+                                                                "core profile, which has no gl_MultiTexCoord0: "
+                                                                "compiled as '#version 150 compatibility', as "
+                                                                "NVIDIA's driver does; write 'compatibility' after "
+                                                                "150 to run everywhere\n#version 150\n^\n");
 }
 
 TEST(CliNvidiaLeniency, ACoreVersionShaderWithARealErrorKeepsTheDriversMessage) {

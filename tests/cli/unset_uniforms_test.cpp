@@ -37,5 +37,18 @@ TEST(CliUnsetUniforms, SettingThemSilencesIt) {
     EXPECT_EQ(r.err, "") << r.err;
 }
 
+// What Glimmer itself feeds (Timer, the built-in noise) is never "unset".
+TEST(CliUnsetUniforms, WhatGlimmerFeedsIsNotUnset) {
+    TempDir dir;
+    const std::string script = dir.file("fed.glib");
+    std::ofstream(dir.file("fed.frag")) << "#version 330 compatibility\nuniform float Timer;\nuniform sampler2D Noise2;\n"
+                                           "in vec2 vST;\nvoid main() { gl_FragColor = vec4(Timer, "
+                                           "texture(Noise2, vST).r, 0., 1.); }\n";
+    std::ofstream(script) << "Vertex st.vert\nFragment fed.frag\nProgram Fed\nQuadXY 0 1\n";
+    auto r = runGlimmer({"check", script, "--backend", "osmesa", "-I", cliData("")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "") << r.err;
+}
+
 }  // namespace
 }  // namespace glimmer_cli

@@ -32,12 +32,27 @@ std::pair<int, std::string> lineStarting(const std::string& path, const std::str
     return {0, ""};
 }
 
+// Every Program of the seed scripts translates, and the translation adds
+// no message of its own: the web check says exactly what the desktop check
+// on a real context says (the script's own warnings), nothing more.
 TEST(CliWebCheck, TheSeedScriptsTranslate) {
     for (const char* script : {"scripts/bloom.glib", "scripts/superblur.glib", "tests/data/web/compat_scene.glib"}) {
-        auto r = runGlimmer({"check", "--web", script});
-        EXPECT_EQ(r.exitCode, 0) << script << "\n" << r.err;
-        EXPECT_EQ(r.err.find("error"), std::string::npos) << script << "\n" << r.err;
+        auto web = runGlimmer({"check", "--web", script});
+        auto desktop = runGlimmer({"check", script, "--backend", "osmesa"});
+        EXPECT_EQ(web.exitCode, 0) << script << "\n" << web.err;
+        EXPECT_EQ(desktop.exitCode, 0) << script << "\n" << desktop.err;
+        EXPECT_EQ(web.err, desktop.err) << script;
+        EXPECT_EQ(web.out, "") << script;
     }
+    // The script made for the translation (every compatibility built-in) is clean;
+    // bloom.glib's warnings are its own lines, as written.
+    EXPECT_EQ(runGlimmer({"check", "--web", "tests/data/web/compat_scene.glib"}).err, "");
+    auto [orthoLine, ortho] = lineStarting("scripts/bloom.glib", "Ortho");
+    EXPECT_EQ(runGlimmer({"check", "--web", "scripts/bloom.glib"}).err,
+              "scripts/bloom.glib: warning: 5 uniforms on lines of their own were taken as part of their Program "
+              "(glman needs a '\\'); -v to list them\n"
+              "scripts/bloom.glib:" + std::to_string(orthoLine) + ":1: warning: degenerate Ortho -1. -1. 1. 1. (left == "
+              "right): OpenGL rejects it and keeps the current projection, Ortho -3 3 -3 3\n" + ortho + "\n^\n");
 }
 
 TEST(CliWebCheck, AGeometryShaderIsOneErrorAtItsProgramsLine) {
@@ -63,9 +78,48 @@ TEST(CliWebCheck, AShaderErrorPointsAtTheShadersLineAndColumn) {
 }
 
 TEST(CliWebCheck, TheDesktopCheckOfTheSameScriptsStillCompilesOnAContext) {
-    // Without --web, a geometry shader is fine: the desktop has them.
+    // Without --web, a geometry shader is fine: the desktop has them, and
+    // the check has nothing to say.
     auto r = runGlimmer({"check", webData("geometry.glib"), "--backend", "osmesa"});
     EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");
+    // It is really compiled there: a mistake in the geometry shader is the
+    // driver's error at its line, where --web only says WebGL 2 has none.
+    TempDir dir;
+    for (const char* f : {"geometry.glib", "compat_pattern.vert", "compat_pattern.frag"})
+        std::ofstream(dir.file(f)) << slurpFile(webData(f));
+    std::string geom = slurpFile(webData("pass.geom"));
+    const std::string good = "gl_Position = gl_in[i].gl_Position;";
+    ASSERT_NE(geom.find(good), std::string::npos);
+    geom.replace(geom.find(good), good.size(), "gl_Position = gl_in[i].gl_Positon;");
+    std::ofstream(dir.file("pass.geom")) << geom;
+    auto broken = runGlimmer({"check", dir.file("geometry.glib"), "--backend", "osmesa"});
+    EXPECT_EQ(broken.exitCode, 1) << broken.err;
+    EXPECT_EQ(broken.err.rfind(dir.file("pass.geom") + ":11:", 0), 0u) << broken.err;
+    EXPECT_NE(broken.err.find(" [driver]\n        gl_Position = gl_in[i].gl_Positon;\n"), std::string::npos)
+        << broken.err;
+    auto web = runGlimmer({"check", "--web", dir.file("geometry.glib")});
+    EXPECT_EQ(web.exitCode, 1) << web.err;
+    EXPECT_EQ(web.err.find("pass.geom:11:"), std::string::npos) << web.err;
+    EXPECT_NE(web.err.find("error: Program Passed cannot run in WebGL 2: its geometry shader 'pass.geom'"),
+              std::string::npos)
+        << web.err;
+}
+
+// GSTAP's aliases (aVertex for gl_Vertex, uModelViewProjectionMatrix for
+// gl_ModelViewProjectionMatrix, ...) are for GSTAP Programs only: a shader of
+// another Program may declare those names as its own.
+TEST(CliWebCheck, AProgramWithoutGstapKeepsItsOwnNames) {
+    TempDir dir;
+    std::ofstream(dir.file("own.vert")) << "#version 330 compatibility\nuniform mat4 uModelViewProjectionMatrix;\n"
+                                           "in vec4 aVertex;\nout vec2 vST;\nvoid main() {\n    vST = aVertex.xy;\n"
+                                           "    gl_Position = uModelViewProjectionMatrix * aVertex;\n}\n";
+    std::ofstream(dir.file("own.frag")) << "#version 330 compatibility\nin vec2 vST;\nvoid main() { gl_FragColor = "
+                                           "vec4(vST, 0., 1.); }\n";
+    std::ofstream(dir.file("own.glib")) << "Vertex own.vert\nFragment own.frag\nProgram Own\nQuadXY 0 1\n";
+    auto r = runGlimmer({"check", "--web", dir.file("own.glib")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, "");
 }
 
 TEST(CliWebCheck, HelpListsTheOption) {

@@ -7,7 +7,8 @@
 //
 // Kept: GLIMMER_TEST_BACKENDS, how a GPU machine chooses the backend the
 // render tests run on (docs/architecture.md), and GLIMMER_UPDATE_EXPECTED,
-// how a developer rewrites the golden pictures (tests/glman/golden_test.cpp).
+// which the Golden tests refuse with a message (tests/glman/golden_test.cpp:
+// the pictures are rewritten only by tools/update-golden.sh).
 #include <cstdlib>
 #include <initializer_list>
 

@@ -65,6 +65,29 @@ TEST(GlmanCheck, UniformFormsThatDoNotFitAreWarnedAndConverted) {
     EXPECT_NEAR(int(pixel(r->screen, 86, 48)[2]), 54, 1);  // 0.2126 * 255
 }
 
+// Issue 26: the conversions the first script does not reach, each read
+// back from its sixth of the picture (8-bit values of .2 = 51, .4 = 102, ...).
+TEST(GlmanCheck, MoreUniformFormsAreConvertedAsTheWarningsSay) {
+    auto r = runPipeline(script("uniform_forms_more"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              (std::vector<std::string>{
+                  "uniform 'uOn' is given a checkbox but its shader declares it vec3; every component is 1",
+                  "uniform 'uM' is given a range but its shader declares it mat2; the value times the identity is used",
+                  "uniform 'uPart' is given an array but its shader declares it vec3; the missing components are 0",
+                  "uniform 'uExtra' is given an array but its shader declares it vec2; the extra values are dropped"}));
+    auto rgb = [&](int sixth) {
+        const std::uint8_t* p = pixel(r->screen, sixth * 16 + 8, 48);
+        return std::vector<int>{p[0], p[1], p[2]};
+    };
+    EXPECT_EQ(rgb(0), (std::vector<int>{255, 255, 255}));  // uOn: every component
+    EXPECT_EQ(rgb(1), (std::vector<int>{153, 0, 0}));      // uN: 2.7 rounds to 3, 3 / 5 = .6
+    EXPECT_EQ(rgb(2), (std::vector<int>{128, 0, 128}));    // uM: the diagonal .5, the rest 0
+    EXPECT_EQ(rgb(3), (std::vector<int>{51, 102, 0}));     // uPart: .2 .4, then 0
+    EXPECT_EQ(rgb(4), (std::vector<int>{51, 102, 0}));     // uExtra: .2 .4; .6 .8 dropped
+    EXPECT_EQ(rgb(5), (std::vector<int>{51, 102, 153}));   // uW[0..2]
+}
+
 TEST(GlmanCheck, NoiseIsMadeOnlyForProgramsThatDeclareIt) {
     auto plain = runPipeline(script("quad_texture"), true, true);
     ASSERT_TRUE(plain->prepared) << plain->printed();
@@ -75,6 +98,18 @@ TEST(GlmanCheck, NoiseIsMadeOnlyForProgramsThatDeclareIt) {
     // A second prepare of the same renderer reuses them.
     ASSERT_TRUE(loadAndUpload(*noisy->renderer, noisy->loaded, false, noisy->diags));
     EXPECT_EQ(noisy->renderer->noiseTexturesMade(), 2u);
+}
+
+// The built-in noise goes on unit 2 only when the script put no 2-D texture
+// there: the script's grid3.bmp (its middle cell cyan) is what a Noise2 sent
+// to unit 2 reads.
+TEST(GlmanCheck, TheScriptsOwnTextureOnUnit2IsWhatNoise2Reads) {
+    auto r = runPipeline(script("noise_unit_taken"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    const std::uint8_t* middle = pixel(r->screen, 48, 48);
+    EXPECT_LT(middle[0], 60) << int(middle[0]) << " " << int(middle[1]) << " " << int(middle[2]);
+    EXPECT_GT(middle[1], 200);
+    EXPECT_GT(middle[2], 200);
 }
 
 TEST(GlmanCheck, ShapesAProgramCannotDrawAreWarnedNotDrawn) {
@@ -128,6 +163,28 @@ TEST(GlmanCheck, AWrongKindOfSamplerReadsBlack) {
             const std::uint8_t* p = pixel(r->screen, x, y);
             EXPECT_EQ(p[0] + p[1] + p[2], 0) << x << "," << y;
         }
+}
+
+// What a unit holds is what the script had bound at the draw's line, in
+// every frame: a volume bound after the left quad's line is not there for
+// it in the second frame either (as in `render --frames` and the viewer).
+TEST(GlmanCheck, ADrawReadsWhatItsUnitHeldAtItsLineInEveryFrame) {
+    auto r = runPipeline(script("unit_kind_later"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              (std::vector<std::string>{"Program Slice: sampler3D uVol reads unit 5, which holds a 2-D texture "
+                                        "(line 9); it reads black"}));
+    UniformValues values(r->loaded.plan);
+    for (int frame = 1; frame <= 2; ++frame) {
+        if (frame == 2) {
+            r->renderer->render(values, 0.0);
+            r->screen = r->renderer->readScreen();
+        }
+        const std::uint8_t* left = pixel(r->screen, 8, 16);
+        const std::uint8_t* right = pixel(r->screen, 24, 16);
+        EXPECT_EQ(left[0] + left[1] + left[2], 0) << "frame " << frame;
+        EXPECT_GT(right[0] + right[1] + right[2], 0) << "frame " << frame << ": the volume is not there";
+    }
 }
 
 }  // namespace

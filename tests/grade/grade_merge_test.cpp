@@ -42,6 +42,9 @@ TEST(GradeMerge, ALastLineCutOffByAKillIsDroppedAndOthersAreErrors) {
     rows.clear();
     EXPECT_FALSE(parseRecords(b.substr(0, 20) + "\n" + a + "\n", "g.jsonl", rows, error));
     EXPECT_EQ(error, "g.jsonl:1: error: expected a quoted key");
+    rows.clear();  // a whole last line (it ends with a newline) was not cut off by a kill: an error
+    EXPECT_FALSE(parseRecords(a + "\n" + b.substr(0, 20) + "\n", "g.jsonl", rows, error));
+    EXPECT_EQ(error, "g.jsonl:2: error: expected a quoted key");
     rows.clear();  // graded again after a resume: the later record stands
     ASSERT_TRUE(parseRecords(a + "\n" + gradeRecord(row("alice", 95)) + "\n", "g.jsonl", rows, error));
     ASSERT_EQ(rows.size(), 1u);

@@ -45,6 +45,55 @@ TEST(GradeReport, CsvIsInNameOrderQuotedAndFormulaSafe) {
               "bob,0,error,,,0.00,,\"class/bob/x.glib:3:1: error: Ortho takes 4 numbers, got 3\"\n");
 }
 
+// Issue 26: every start a spreadsheet runs as a formula (= + - @) gets a
+// quote in front, in every text column; a line break in a name is quoted.
+TEST(GradeReport, CsvGuardsEveryFormulaStartAndQuotesLineBreaks) {
+    GradeRow plus = row("+cmd|' /C calc'!A0", "wrong", 1), minus = row("-2+3", "wrong", 2),
+             at = row("@SUM(A1:A9)", "wrong", 3), eq = row("=1+1", "wrong", 4), nl = row("two\nlines", "wrong", 5),
+             cr = row("x\ry", "wrong", 6);
+    plus.notes = "+1";
+    EXPECT_EQ(gradesCsv({plus, minus, at, eq, nl, cr}),
+              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic\n"
+              "'+cmd|' /C calc'!A0,1,wrong,0.0000,0.00,0.00,'+1,\n"
+              "'-2+3,2,wrong,0.0000,0.00,0.00,,\n"
+              "'=1+1,4,wrong,0.0000,0.00,0.00,,\n"
+              "'@SUM(A1:A9),3,wrong,0.0000,0.00,0.00,,\n"
+              "\"two\nlines\",5,wrong,0.0000,0.00,0.00,,\n"
+              "\"x\ry\",6,wrong,0.0000,0.00,0.00,,\n");
+}
+
+// Issue 26: a student's name goes into attributes (the row's id, the glance
+// strip's link): a '"' in it must not end the attribute.
+TEST(GradeReport, AQuoteInANameCannotLeaveItsAttribute) {
+    EXPECT_EQ(htmlEscape("a \"b\" <c> & 'd'"), "a &quot;b&quot; &lt;c&gt; &amp; &#39;d&#39;");
+    GradeRow r = row("x\" onmouseover=\"alert(1)", "pass", 100);
+    std::string html = reportRowHtml(r, {});
+    EXPECT_EQ(html.find("\" onmouseover"), std::string::npos) << html;
+    EXPECT_NE(html.find("id=\"s-x&quot; onmouseover=&quot;alert(1)\""), std::string::npos) << html;
+    ReportHeader h;
+    h.solution = "sol.glib";
+    h.settings = {"defaults"};
+    std::string page = reportHtml(h, {r}, {html});
+    EXPECT_EQ(page.find("\" onmouseover"), std::string::npos);
+    EXPECT_NE(page.find("<a class=pass href=\"#s-x&quot; onmouseover=&quot;alert(1)\">"), std::string::npos);
+}
+
+TEST(GradeReport, AFinishedRunDoesNotSayTheRestIsStillRunning) {
+    ReportHeader h;
+    h.solution = "sol.glib";
+    h.settings = {"defaults"};
+    h.thresholds = "t";
+    h.expected = 2;
+    std::vector<GradeRow> rows{row("a", "pass", 100), row("b", "look", 90)};
+    std::string page = reportHtml(h, rows, {"", ""});
+    EXPECT_NE(page.find("<p class=how>2 submissions · compared at 1 setting: defaults · t · sandbox on</p>"),
+              std::string::npos)
+        << page;
+    h.expected = 3;
+    EXPECT_NE(reportHtml(h, rows, {"", ""}).find("<p class=how>2 submissions of 3 (the rest still running) · "),
+              std::string::npos);
+}
+
 TEST(GradeReport, RecordsReadBackExactly) {
     GradeRow r = row("zoë \"z\"", "look", 91);
     r.submission = "class/zoe.zip";
@@ -73,6 +122,14 @@ TEST(GradeReport, RecordsReadBackExactly) {
     EXPECT_EQ(error, "score '1e300' is not a whole number from 0 to 100");
     EXPECT_FALSE(parseGradeRecord("{\"student\": \"x\"}", back, error));
     EXPECT_EQ(error, "no \"submission\"");
+    std::string half = line;
+    half.replace(half.find("\"score\": 91"), 11, "\"score\": 91.5");
+    EXPECT_FALSE(parseGradeRecord(half, back, error));
+    EXPECT_EQ(error, "score '91.5' is not a whole number from 0 to 100");
+    std::string maybe = line;
+    maybe.replace(maybe.find("\"verdict\": \"look\""), 17, "\"verdict\": \"maybe\"");
+    EXPECT_FALSE(parseGradeRecord(maybe, back, error));
+    EXPECT_EQ(error, "verdict 'maybe' is not pass, look, wrong or error");
 }
 
 TEST(GradeReport, TheHtmlEscapesWhatStudentsWrote) {

@@ -104,6 +104,86 @@ TEST(Grading, VerdictsFollowTheThresholds) {
     EXPECT_EQ(judge({}, {}, t, worst).kind, "error");
 }
 
+// Issue 26: the pass rule is SSIM and PSNR, both. A picture uniformly
+// brighter than the solution keeps its structure (SSIM high) but is 20 dB
+// away: a person must look at it, it does not pass.
+TEST(Grading, ThePassNeedsBothSsimAndPsnr) {
+    Thresholds t;
+    size_t worst = 9;
+    EXPECT_EQ(judge({{30, 0.95, false}}, {}, t, worst).kind, "pass");  // both exactly at the thresholds
+    Verdict v = judge({{INFINITY, 1.0, false}, {29.9, 0.99, false}}, {}, t, worst);
+    EXPECT_EQ(v.kind, "look");
+    EXPECT_EQ(v.notes, "SSIM 0.990, PSNR 29.9 dB at the worst setting");
+    EXPECT_EQ(judge({{29.99, 1.0, false}}, {}, t, worst).kind, "look");
+
+    Image solution = gradient(64, 64), brighter = solution;
+    for (size_t i = 0; i < brighter.u8.size(); ++i)
+        if (i % 4 != 3) brighter.u8[i] = std::uint8_t(std::min(255, brighter.u8[i] + 25));
+    Comparison c = comparePictures(brighter, solution);
+    ASSERT_GE(c.ssim, t.passSsim);  // what makes the picture a test of the PSNR half
+    EXPECT_NEAR(c.psnr, 20.2, 0.3);  // 25 of 255 on most channels: about 20 log10(255 / 25) dB
+    EXPECT_EQ(judge({c}, {}, t, worst).kind, "look");
+}
+
+// Issue 26: a single-colour picture is wrong even where its SSIM would be
+// close enough to look at: a grey canvas against a grey solution with four
+// small bright squares.
+TEST(Grading, ABlankPictureIsWrongEvenWhenItsSsimLooksClose) {
+    Thresholds t;
+    size_t worst = 9;
+    Verdict v = judge({{15, 0.8, true}}, {}, t, worst);
+    EXPECT_EQ(v.kind, "wrong");
+    EXPECT_EQ(v.notes, "the picture is a single colour");
+    EXPECT_EQ(v.score, 80);
+
+    Image solution = Image::rgba8(64, 64), grey = Image::rgba8(64, 64);
+    for (size_t i = 0; i < solution.u8.size(); ++i) solution.u8[i] = grey.u8[i] = i % 4 == 3 ? 255 : 128;
+    for (int y = 0; y < 64; ++y)  // four bright 4x4 squares, one in each quarter
+        for (int x = 0; x < 64; ++x)
+            if (x % 32 >= 14 && x % 32 < 18 && y % 32 >= 14 && y % 32 < 18) solution.u8[(size_t(y) * 64 + size_t(x)) * 4] = 255;
+    Comparison c = comparePictures(grey, solution);
+    EXPECT_TRUE(c.blank);
+    ASSERT_GE(c.ssim, t.lookSsim);  // close by SSIM alone
+    ASSERT_LT(c.ssim, t.passSsim);
+    EXPECT_EQ(judge({c}, {}, t, worst).kind, "wrong");
+}
+
+// Blank means "one colour where the solution is not": a solution that is
+// one colour itself (a script that only clears) matched exactly passes; a
+// picture that changes only in blue is not one colour.
+TEST(Grading, BlankMeansOneColourWhereTheSolutionIsNot) {
+    Image black = Image::rgba8(16, 16);
+    for (size_t i = 3; i < black.u8.size(); i += 4) black.u8[i] = 255;
+    Comparison same = comparePictures(black, black);
+    EXPECT_FALSE(same.blank);
+    Thresholds t;
+    size_t worst = 9;
+    EXPECT_EQ(judge({same}, {}, t, worst).kind, "pass");
+    Image blues = black;
+    for (size_t p = 0; p < 16 * 16; ++p) blues.u8[p * 4 + 2] = std::uint8_t(p);
+    EXPECT_FALSE(comparePictures(blues, gradient(16, 16)).blank);
+    EXPECT_TRUE(comparePictures(black, gradient(16, 16)).blank);
+}
+
+TEST(Grading, TheScoreIsClampedToZeroForANegativeSsim) {
+    Thresholds t;
+    size_t worst = 9;
+    Verdict v = judge({{5, -0.2, false}}, {}, t, worst);
+    EXPECT_EQ(v.score, 0);
+    EXPECT_EQ(v.kind, "wrong");
+    EXPECT_EQ(v.notes, "SSIM -0.200, PSNR 5.0 dB at the worst setting");
+}
+
+TEST(Grading, VaryGivesAtMost64Settings) {
+    std::vector<Setting> s;
+    std::string error, values = "uA=0";
+    for (int k = 1; k < 63; ++k) values += "," + std::to_string(k);
+    ASSERT_TRUE(settingsFromVary({values}, s, error)) << error;  // the defaults and 63 values
+    EXPECT_EQ(s.size(), 64u);
+    EXPECT_FALSE(settingsFromVary({values + ",63"}, s, error));
+    EXPECT_EQ(error, "--vary gives 65 settings; at most 64");
+}
+
 TEST(Grading, Base64MatchesRfc4648) {
     auto b = [](const std::string& s) { return base64(std::vector<std::uint8_t>(s.begin(), s.end())); };
     EXPECT_EQ(b(""), "");

@@ -78,6 +78,26 @@ TEST(Dependencies, AllPassesIntoOneTargetRunTogether) {
     EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true, true}));
 }
 
+// The same with a texture: B draws into unit 6 over what A drew there, so
+// when B changes, A draws again first, and C, which reads 6, after both.
+TEST(Dependencies, AllPassesIntoOneTextureRunTogether) {
+    TempProject tp;
+    Planned pl = plan(tp.script(),
+                      "Vertex a.vert\nFragment a.frag\nTexture2D 6 8 8\nRenderToTexture 6\nProgram A\nQuadXY 0 1\n"
+                      "RenderToTexture 6\nProgram B\nQuadXY 0 .5\n"
+                      "RenderToTexture\nProgram C Img 6\nQuadXY 0 1\n");
+    const Plan& p = pl.plan;
+    ASSERT_EQ(p.passes.size(), 3u) << messages(pl.diags).size();
+    ASSERT_EQ(p.passes[0].targets, p.passes[1].targets);
+    Change c;
+    c.programs = {programNamed(p, "B")};
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true, true}));
+    c.programs = {programNamed(p, "A")};
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{true, true, true}));
+    c.programs = {programNamed(p, "C")};
+    EXPECT_EQ(passesToRun(p, c), (std::vector<bool>{false, false, true}));
+}
+
 }  // namespace
 
 namespace {
@@ -104,6 +124,20 @@ TEST(CarryOver, KeepsValuesOfUnchangedUniforms) {
     EXPECT_EQ(now.get(0, "uZ"), std::vector<double>{1});
 }
 
+// A form that changed keeps nothing, even where the old value would fit
+// (a range's one number into a checkbox, a checkbox into a range).
+TEST(CarryOver, AChangedFormStartsFromTheScript) {
+    TempProject tp;
+    Planned a = plan(tp.script(), "Vertex a.vert\nFragment a.frag\nProgram P uE <0 1 10> uF <true>\nQuadXY 0 1\n");
+    Planned b = plan(tp.script(), "Vertex a.vert\nFragment a.frag\nProgram P uE <false> uF <0 4 10>\nQuadXY 0 1\n");
+    UniformValues old(a.plan);
+    old.set(0, "uE", {7});
+    UniformValues now(b.plan);
+    now.carryOver(a.plan, old, b.plan);
+    EXPECT_EQ(now.get(0, "uE"), std::vector<double>{0});
+    EXPECT_EQ(now.get(0, "uF"), std::vector<double>{4});
+}
+
 TEST(CarryOver, ProgramsDifferingFrom) {
     TempProject tp;
     Planned a = plan(tp.script(), "Vertex a.vert\nFragment a.frag\nProgram P uA <0 1 10>\nProgram Q uB <0 1 10>\n");
@@ -111,6 +145,11 @@ TEST(CarryOver, ProgramsDifferingFrom) {
     EXPECT_TRUE(x.programsDifferingFrom(y).empty());
     y.set(1, "uB", {3});
     EXPECT_EQ(x.programsDifferingFrom(y), std::set<int>{1});
+    // A uniform that only one side holds (a reload added it) is a difference, either way round.
+    Planned b = plan(tp.script(), "Vertex a.vert\nFragment a.frag\nProgram P uA <0 1 10> uC <true>\nProgram Q uB <0 1 10>\n");
+    UniformValues z(b.plan);
+    EXPECT_EQ(x.programsDifferingFrom(z), std::set<int>{0});
+    EXPECT_EQ(z.programsDifferingFrom(x), std::set<int>{0});
 }
 
 }  // namespace

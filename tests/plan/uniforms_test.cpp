@@ -210,6 +210,9 @@ TEST_F(SetTest, Bools) {
     EXPECT_EQ(v.get(1, "uOn"), D{1});
     EXPECT_TRUE(v.applySet(p.plan, "uOn=0", d));
     EXPECT_EQ(v.get(1, "uOn"), D{0});
+    EXPECT_TRUE(v.applySet(p.plan, "uOn=True", d));  // the words in any case
+    EXPECT_EQ(v.get(0, "uOn"), D{1});
+    EXPECT_EQ(v.get(1, "uOn"), D{1});
     EXPECT_EQ(messages(d), V{});
 }
 
@@ -269,6 +272,16 @@ TEST_F(SetTest, ColoursTakeThreeOrFourNumbers) {
     EXPECT_EQ(errors(d), (V{"--set uTint=1,0: uniform 'uTint' of Program One is a colour and takes R,G,B or R,G,B,A",
                            "'x' in --set uTint=1,0,x is not a number"}));
     EXPECT_EQ(v.get(0, "uTint"), (D{0.5, 0, 1, 1}));
+}
+
+TEST(SetColour, RgbKeepsTheScriptsOwnAlpha) {
+    ProgramLine l("uGlow {1 0 0 .25}");
+    ASSERT_EQ(messages(l.p.diags), V{});
+    UniformValues v(l.p.plan);
+    Diagnostics d;
+    EXPECT_TRUE(v.applySet(l.p.plan, "uGlow=0,1,0", d));
+    EXPECT_EQ(v.get(0, "uGlow"), (D{0, 1, 0, 0.25}));
+    EXPECT_EQ(messages(d), V{});
 }
 
 TEST_F(SetTest, VectorsTakeTheirLength) {

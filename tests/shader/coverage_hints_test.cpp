@@ -21,6 +21,9 @@ TEST(CoverageHints, AnythingElseIsNotVouchedFor) {
                                      "  gl_Position.x += 0.1; }"));
     EXPECT_FALSE(keepsPlainTransform("void main() { }"));
     EXPECT_FALSE(keepsPlainTransform("uniform mat4 M; void main() { gl_Position = M * gl_Vertex; }"));
+    // The plain transform last, after another write in a branch: not the only write.
+    EXPECT_FALSE(keepsPlainTransform("uniform bool uHide; void main() { if (uHide) gl_Position = vec4(2.);\n"
+                                     "  else gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }"));
 }
 
 TEST(CoverageHints, DiscardAsAWordOnly) {

@@ -45,6 +45,9 @@ TEST(Gs4Translate, VerticesInInCodeAndInASize) {
                           "void main() { for (int i = 0; i < gl_VerticesIn; i++) {} }\n");
     EXPECT_EQ(r.text, "in vec3 vN[];\n"
                       "void main() { for (int i = 0; i < gl_in.length(); i++) {} }\n");
+    // A size inside a function is a local array's: the count, not unsized.
+    r = translateGs4("void main() { vec3 c[gl_VerticesIn]; }\n");
+    EXPECT_EQ(r.text, "void main() { vec3 c[gl_in.length()]; }\n");
 }
 
 TEST(Gs4Translate, VaryingInAndOut) {
@@ -124,6 +127,12 @@ TEST(Gs4Translate, WithoutADrawPrimitiveNoLayoutIsAdded) {
 TEST(Gs4Translate, OldVersionIsRaisedTo150Compatibility) {
     auto r = translateGs4("#version 120\n#extension GL_EXT_geometry_shader4 : enable\nvoid main() {}\n");
     EXPECT_EQ(r.text, "#version 150 compatibility\n\nvoid main() {}\n");
+    // 1.50 has geometry shaders: its #version stays as written.
+    for (const char* v : {"#version 150", "#version 150 compatibility", "#version 330"}) {
+        r = translateGs4(std::string(v) + "\n#extension GL_EXT_geometry_shader4 : enable\nvoid main() {}\n");
+        EXPECT_EQ(r.text, std::string(v) + "\n\nvoid main() {}\n");
+        EXPECT_EQ(r.rewrites, std::vector<std::string>{"#extension GL_EXT_geometry_shader4 dropped"});
+    }
 }
 
 TEST(Gs4Translate, AStandardShaderIsUntouched) {

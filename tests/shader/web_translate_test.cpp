@@ -191,6 +191,45 @@ TEST(WebTranslate, TheFixedFunctionVaryingsBecomeNamedVaryingsThatMatch) {
     EXPECT_FALSE(has(f.t.text, "glimmer_TexCoord2")) << "only what the stage uses:\n" << f.t.text;
 }
 
+// gl_MaxTextureCoords is 8: gl_TexCoord[0] to [7] become varyings, and
+// gl_TexCoord[8] is the error it is on a desktop driver, at its own line.
+TEST(WebTranslate, TexCoordPastTheLastIsAnError) {
+    const std::string text = "#version 120\nvoid main() {\n    gl_TexCoord[7] = vec4(1.);\n    gl_TexCoord[8] = vec4(1.);\n"
+                             "    gl_Position = vec4(0.);\n}\n";
+    Result r = translate(text, WebStage::Vertex);
+    EXPECT_FALSE(r.t.ok);
+    ASSERT_GE(r.diags.errorCount(), 1) << r.printed();
+    const Diagnostic& d = r.diags.all().front();
+    EXPECT_EQ(d.loc.line, 4) << r.printed();
+    EXPECT_EQ(d.loc.col, 5) << r.printed();
+    EXPECT_EQ(d.message.rfind("'gl_TexCoord': undeclared identifier", 0), 0u) << r.printed();
+}
+
+// Each stage keeps its own words: 'attribute' in a fragment shader is an
+// error there, as on the desktop, not an input.
+TEST(WebTranslate, AttributeInAFragmentShaderIsAnError) {
+    Result r = translate("#version 120\nattribute float a;\nvoid main() { gl_FragColor = vec4(a); }\n", WebStage::Fragment);
+    EXPECT_FALSE(r.t.ok);
+    ASSERT_GE(r.diags.errorCount(), 1) << r.printed();
+    const Diagnostic& d = r.diags.all().front();
+    EXPECT_EQ(d.loc.line, 2);
+    EXPECT_EQ(d.loc.col, 1);
+    EXPECT_EQ(d.message, "'attribute': not supported in this stage: fragment");
+}
+
+// gl_FragColor and gl_FragData in one shader: the desktop compiler refuses
+// the pair, and so does the translation, at the user's line.
+TEST(WebTranslate, FragColorAndFragDataTogetherAreAnErrorAtTheUsersLine) {
+    Result r = translate("#version 120\nvoid main() {\n    gl_FragColor = vec4(1.);\n    gl_FragData[1] = vec4(0.);\n}\n",
+                         WebStage::Fragment);
+    EXPECT_FALSE(r.t.ok);
+    ASSERT_GE(r.diags.errorCount(), 1) << r.printed();
+    const Diagnostic& d = r.diags.all().front();
+    EXPECT_EQ(d.loc.line, 4) << r.printed();
+    EXPECT_EQ(d.loc.col, 5) << r.printed();
+    EXPECT_NE(d.message.find("FragData'"), std::string::npos) << r.printed();
+}
+
 TEST(WebTranslate, ABuiltinWithNoStandInIsNamedAsSuch) {
     const std::string text = "void main() {\n    gl_FragColor = gl_LightSource[0].diffuse;\n}\n";
     Result r = translate(text, WebStage::Fragment);
