@@ -24,16 +24,21 @@ export async function openPage(url, seconds = 120) {
     "--headless=new", "--no-sandbox", `--user-data-dir=${profile}`, `--use-angle=${angle}`,
     "--enable-unsafe-swiftshader", "--ignore-gpu-blocklist", "--allow-file-access-from-files",
     "--remote-debugging-port=0", "about:blank"], { stdio: "ignore" });
-  const close = (code) => {
+  let timer;
+  // Ends Chromium, then the process with `code`; with `code` null it only
+  // ends Chromium (a caller opening another page), resolving once it is gone.
+  const close = (code) => new Promise((resolve) => {
+    clearTimeout(timer);
     // Chromium's helpers may still be writing the profile as it exits: retry,
     // and never let a leftover folder turn a result into a crash.
     browser.once("exit", () => {
       try { rmSync(profile, { recursive: true, force: true, maxRetries: 10, retryDelay: 100 }); } catch {}
-      process.exit(code);
+      if (code === null) resolve();
+      else process.exit(code);
     });
     browser.kill();
-  };
-  setTimeout(() => { console.error(`no result from the page in ${seconds} s`); close(1); }, seconds * 1000);
+  });
+  timer = setTimeout(() => { console.error(`no result from the page in ${seconds} s`); close(1); }, seconds * 1000);
 
   // Chromium writes its port into the profile once it listens.
   let port;

@@ -57,6 +57,25 @@ for (const drag of drags) {
   savePng(`slider-${name}.png`, await page.evaluate("glimmerPage.snapshot()"));
 }
 
+// With PROBE=X,Y (picture pixels from its top left): the Probe box ticked
+// with a click, the pointer moved over that pixel, and the probe's text
+// then (result.probe), what the tooltip by the pointer says.
+if (process.env.PROBE) {
+  const [px, py] = process.env.PROBE.split(",").map(Number);
+  const [x, y, w, h] = await page.evaluate(`glimmerPage.control("Probe")`);
+  const box = { x: canvasAt[0] + x + 8, y: canvasAt[1] + y + h / 2 };
+  await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", ...box });
+  await frames();  // the panel sees the pointer, the press and the release each in frames of their own
+  await page.send("Input.dispatchMouseEvent", { type: "mousePressed", button: "left", buttons: 1, clickCount: 1, ...box });
+  await frames();
+  await page.send("Input.dispatchMouseEvent", { type: "mouseReleased", button: "left", buttons: 0, clickCount: 1, ...box });
+  await frames();
+  const over = { x: canvasAt[0] + px + 0.5, y: canvasAt[1] + py + 0.5 };
+  await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", ...over });
+  await frames();
+  result.probe = await page.evaluate("glimmerPage.probe()");
+}
+
 // Save sheet, varying the first slider over three values (the other at
 // what its drag left): OUT_DIR/sheet.png.
 if (process.env.SHEET) savePng("sheet.png", await page.evaluate(`glimmerPage.sheet(${JSON.stringify(process.env.SHEET)})`));

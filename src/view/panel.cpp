@@ -350,6 +350,10 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
             ImGui::TextDisabled("drag across the picture to move it");
         }
         ImGui::Checkbox("Probe (hover the picture)", &s.probe);
+        {  // where a test (or a tour) finds it, as the sliders
+            ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+            s.controlRects["Probe"] = {at.x, at.y, size.x, size.y};
+        }
         if (!s.probeText.empty()) ImGui::TextUnformatted(s.probeText.c_str());
 
         // Timings fold away, so the sliders stay near the top. A picture

@@ -29,6 +29,8 @@
 #include "view/file_watch.h"
 #include "view/panel.h"
 #include "view/view_model.h"
+#include "view/view_keys.h"
+#include "view/viewer_core.h"
 #include "view/wakeups.h"
 
 namespace glimmer {
@@ -36,57 +38,25 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A slice of a heavy frame draws for about this long between two window
-// frames: with the window's own ~10 ms on llvmpipe a frame stays near 35 ms
-// while a slider is dragged (the goal is a p95 under 50 ms), and the bands
-// stay tall enough that their set-up costs little (docs/PERFORMANCE.md).
-constexpr double kSliceMs = 18;
 // While a frame draws and nothing asks for the window, slices follow each
 // other without a window frame in between, except to show progress this often.
 constexpr auto kProgressEvery = std::chrono::milliseconds(100);
-constexpr double kIdleSliceFactor = 5;
 constexpr int kOverlayAt = 8;  // the "Show values" box's top left, in the picture and in the window
-
-// The slice budget: kSliceMs, or $GLIMMER_SLICE_MS for benchmarks
-// (tools/bench-viewer.sh), where 0 draws every frame whole, as before slices.
-double sliceBudgetMs() {
-    const char* e = std::getenv("GLIMMER_SLICE_MS");
-    if (!e || !*e) return kSliceMs;
-    char* end = nullptr;
-    double v = std::strtod(e, &end);
-    if (end == e || *end || !(v >= 0) || v > 1e6) return kSliceMs;
-    return v == 0 ? std::numeric_limits<double>::infinity() : v;
-}
 
 class Viewer {
 public:
     Viewer(const ViewOptions& o, GlfwWindow& window, int width, int height)
-        : options_(o), window_(window), width_(width), height_(height), reqW_(width), reqH_(height) {
+        : options_(o), window_(window), width_(width), height_(height), reqW_(width), reqH_(height),
+          core_({o.script, o.includeDirs, o.sets, o.standIns, o.sandbox},
+                [&window](const char* n) { return window.getProcAddress(n); }),
+          s_(core_.state()) {
         s_.keyHint = "H hides this panel, F fullscreen, Q quits";
-    }
-
-    // The script at w x h, parsed, planned and prepared on a renderer of its
-    // own. False (with diagnostics) when anything failed; `renderer` is then null.
-    bool prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer, Diagnostics& diags) {
-        ScriptRequest request;
-        request.script = options_.script;
-        request.plan.includeDirs = options_.includeDirs;
-        request.plan.standIns = options_.standIns;
-        request.plan.sandbox = options_.sandbox;
-        request.plan.width = w;
-        request.plan.height = h;
-        // Every target can be looked at in the pass inspector, so every pass
-        // that draws into one runs, read by a later pass or not.
-        for (int unit = 0; unit < 32; ++unit) request.plan.keepTargets.insert(unit);
-        renderer = prepareScript(request, [&](const char* n) { return window_.getProcAddress(n); }, diags, next);
-        return renderer != nullptr;
     }
 
     // Prints errors first, then only the warnings not printed before (a
     // reload does not repeat the seed's warnings every time), and keeps both
     // for the panel.
-    void report(const Diagnostics& diags, const SourceTexts& sources) {
-        keepMessages(s_, diags, sources);
+    void report() {
         std::string errors, warnings;
         int repeated = 0;
         for (const auto& e : s_.errors) errors += e.text + "\n";
@@ -105,21 +75,16 @@ public:
     // script, renderer and values stay; the error is shown and printed.
     void load(const char* why) {
         Diagnostics diags;
-        LoadedScript next;
-        std::unique_ptr<Renderer> renderer;
-        prepareAt(width_, height_, next, renderer, diags);
-        watchFilesOf(next.plan);
-        report(diags, next.sources);
-        if (!renderer) {
-            if (s_.errors.empty()) s_.errors.push_back({"the script could not be loaded", options_.script});
-            s_.failed = true;
+        SourceTexts sources;
+        Plan plan;
+        bool loaded = core_.load(width_, height_, diags, sources, &plan);
+        watchFilesOf(plan);
+        report();
+        if (!loaded) {
             s_.status = fmt::format("{} failed; keeping the last good picture", why);
             std::cerr << "glimmer view: " << s_.status << "\n";
             return;
         }
-        adoptScript(s_, std::move(next), std::move(renderer), options_.sets, diags);
-        drawing_.reset();  // its passes belong to the old plan
-        firstFrame_ = true;
         s_.status = why;
         std::cerr << "glimmer view: " << why << "\n";
     }
@@ -153,7 +118,7 @@ public:
             // kernel reports, a resize to settle; a running Timer draws at 50 Hz.
             ImGuiIO& io = ImGui::GetIO();
             bool animating = s_.playing && timerUsed();
-            const bool busy = drawing_.has_value();
+            const bool busy = core_.drawing();
             if (framesLeft > 0 || busy) glfwPollEvents();
             else if (animating) glfwWaitEventsTimeout(0.02);
             else if (watch_.busy() || resizeAt_ != Clock::time_point::max()) glfwWaitEventsTimeout(0.025);
@@ -189,9 +154,9 @@ public:
             if (!draw && busy) {
                 // Nothing asked for the window: draw more of the frame, and
                 // show how far it got now and then.
-                if (Clock::now() - lastUiFrame_ < kProgressEvery) {
+                if (Clock::now() - core_.lastFrameShown() < kProgressEvery) {
                     renderScene();
-                    if (drawing_) continue;
+                    if (core_.drawing()) continue;
                 }
                 draw = true;  // progress to show, or the finished picture
             }
@@ -213,7 +178,7 @@ public:
             presentPicture(fbw, fbh);
             ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
             glfwSwapBuffers(w);
-            noteFrame();
+            core_.noteFrame();
             for (const auto& c : asked) quit |= apply(c);
             layout();
         }
@@ -363,14 +328,17 @@ private:
         std::vector<int> presses;
         presses.swap(gKeyPresses);
         if (io.WantTextInput) return false;
-        auto pressed = [&](int key) { return std::find(presses.begin(), presses.end(), key) != presses.end(); };
-        if (pressed(GLFW_KEY_Q) || pressed(GLFW_KEY_ESCAPE)) return true;
-        if (pressed(GLFW_KEY_SPACE)) s_.playing = !s_.playing;
-        if (pressed(GLFW_KEY_H)) s_.panelShown = !s_.panelShown;
-        if (pressed(GLFW_KEY_R)) load("reloaded");
-        if (pressed(GLFW_KEY_0) || pressed(GLFW_KEY_KP_0)) resetView(s_);
-        if (pressed(GLFW_KEY_S)) save(nextFreeName("glimmer", ".png"), false);
-        if (pressed(GLFW_KEY_F)) toggleFullscreen();
+        for (int key : presses) {  // named as the page's DOM names them, for view/view_keys.h's table
+            // GLFW's letter and digit keys are their ASCII capitals and digits, whatever the layout.
+            std::string name = key == GLFW_KEY_ESCAPE ? "Escape" : key == GLFW_KEY_SPACE ? " " : key == GLFW_KEY_KP_0 ? "0"
+                               : (key >= GLFW_KEY_0 && key <= GLFW_KEY_Z) ? std::string(1, char(key)) : "";
+            KeyAction action = keyAction(name);
+            if (action == KeyAction::Quit) return true;
+            if (applyStateKey(action, s_)) continue;
+            if (action == KeyAction::Reload) load("reloaded");
+            if (action == KeyAction::Save) save(nextFreeName("glimmer", ".png"), false);
+            if (action == KeyAction::Fullscreen) toggleFullscreen();
+        }
         return false;
     }
 
@@ -405,106 +373,33 @@ private:
         probe(over && !down, x - px, y - py, pw, ph);
     }
 
-    // The pixel probe: the float value of every channel of the shown target
-    // under the pointer, read back once per new picture.
+    // The pixel probe (view/viewer_core.h), as a tooltip by the pointer.
     void probe(bool over, double x, double y, int pw, int ph) {
         s_.probeText.clear();
-        if (!s_.probe || !over || !s_.renderer || s_.compare) return;
-        if (probeVersion_ != pictureVersion_ || probeTexture_ != s_.shownTexture) {
-            probeImage_ = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTextureFloat(s_.shownTexture);
-            probeVersion_ = pictureVersion_;
-            probeTexture_ = s_.shownTexture;
-        }
-        const Image& img = probeImage_;
-        if (img.empty()) return;
-        double scale = std::min(double(pw) / img.width, double(ph) / img.height);
-        double ox = (pw - img.width * scale) / 2, oy = (ph - img.height * scale) / 2;
-        int ix = int(std::floor((x - ox) / scale)), iy = int(std::floor((y - oy) / scale));
-        if (ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return;
-        size_t i = (size_t(iy) * size_t(img.width) + size_t(ix)) * 4;
-        float v[4];
-        for (int c = 0; c < 4; ++c) v[c] = img.type == Image::Type::F32 ? img.f32[i + size_t(c)] : img.u8[i + size_t(c)] / 255.f;
-        s_.probeText = fmt::format("({}, {}) of {}: r {:.4g}  g {:.4g}  b {:.4g}  a {:.4g}", ix, iy,
-                                   s_.shownTexture < 0 ? std::string("screen") : fmt::format("texture {}", s_.shownTexture),
-                                   v[0], v[1], v[2], v[3]);
-        ImGui::BeginTooltip();
-        ImGui::TextUnformatted(s_.probeText.c_str());
-        ImGui::EndTooltip();
+        if (over) core_.probe(x, y, pw, ph);
     }
 
     // Slices of kSliceMs while the user is at it; once input has stopped
-    // for 120 ms, longer ones, so the final picture comes sooner (fewer
-    // bands and window frames between them).
+    // for 120 ms, longer ones, so the final picture comes sooner. The numeric
+    // health badge reads every target back: after a finished picture, at
+    // most twice a second, so dragging a slider stays smooth.
     void renderScene() {
-        // A script's first picture is drawn whole: until it is, its targets
-        // and screen hold nothing to show, and the last picture is gone
-        // with the old renderer (a reload is one pause, not a drag).
-        if (firstFrame_) {
-            renderScene(std::numeric_limits<double>::infinity());
-            firstFrame_ = drawing_.has_value();
-            return;
-        }
         bool active = Clock::now() - lastInput_ < std::chrono::milliseconds(120);
-        renderScene(active ? sliceMs_ : sliceMs_ * kIdleSliceFactor);
+        core_.draw(active ? sliceMs_ : sliceMs_ * kIdleSliceFactor);
+        noteHealth();
     }
-    // Starts a frame of the passes that changed since the last one started:
-    // all after a load, the ones reading a changed Program's uniforms, the
-    // ones reading Timer while time runs. A change while a frame is under
-    // way replaces it, and the new frame also draws what the old one had not
-    // finished (the stale work is dropped, never half kept). Then draws
-    // about `budgetMs` of the frame in bands (gl/renderer_sliced.cpp), so a
-    // heavy pass never holds the window; the picture counts as drawn once
-    // the frame finishes, bit-identical to one whole render.
-    void renderScene(double budgetMs) {
-        if (!s_.renderer || !s_.good) return;
-        const Plan& plan = s_.good->plan;
-        Change change = changeSinceDrawn(s_, false);
-        // Time alone never replaces a frame under way: a heavy animated scene
-        // would otherwise restart every window frame and never finish one.
-        if (s_.time != s_.drawnTime && (!drawing_ || !change.programs.empty() || change.screen || change.everything))
-            change = changeSinceDrawn(s_, true);
-        s_.sceneMoved = false;
-        std::vector<bool> only = passesToRun(plan, change);
-        bool any = false;
-        for (bool b : only) any |= b;
-        if (any) {
-            if (drawing_) {
-                std::vector<bool> left = drawing_->unfinished();
-                for (size_t p = 0; p < only.size() && p < left.size(); ++p) only[p] = only[p] || left[p];
-            }
-            drawing_.emplace(s_.renderer->startFrame(*s_.values, s_.time, std::move(only)));
-            drawingSince_ = Clock::now();
-            slices_ = 0;  // the slices of this frame only
-            s_.drawnWith = s_.values;
-            s_.drawnTime = s_.time;
-            s_.drawAll = false;
-        }
-        if (!drawing_) return;
-        ++slices_;
-        if (!s_.renderer->renderSlice(*drawing_, budgetMs)) {
-            s_.drawing = float(s_.renderer->progress(*drawing_));
-            return;
-        }
-        s_.drawing = -1;
-        s_.lastTimings = drawing_->timings;
-        s_.lastFrameMs = 0;
-        for (const auto& t : s_.lastTimings) s_.lastFrameMs += t.ms;
-        lastPictureMs_ = std::chrono::duration<double, std::milli>(Clock::now() - drawingSince_).count();
-        lastPictureSlices_ = slices_;
-        drawing_.reset();
-        ++pictureVersion_;
-        // The numeric health badge reads every target back: at most twice a
-        // second, so dragging a slider stays smooth.
+    void noteHealth() {
         auto now = Clock::now();
-        if (now - lastHealth_ >= std::chrono::milliseconds(500)) {
-            s_.health = measureHealth(*s_.renderer, plan);
-            lastHealth_ = now;
-            std::string report;
-            for (const auto& h : s_.health)
-                if (h.bad()) report += formatHealth(h) + "\n";
-            if (report != lastReport_) std::cerr << report;  // once per change, for scripts watching stderr
-            lastReport_ = report;
-        }
+        if (core_.pictureVersion() == healthVersion_ || now - lastHealth_ < std::chrono::milliseconds(500) || !s_.good)
+            return;
+        healthVersion_ = core_.pictureVersion();
+        s_.health = measureHealth(*s_.renderer, s_.good->plan);
+        lastHealth_ = now;
+        std::string report;
+        for (const auto& h : s_.health)
+            if (h.bad()) report += formatHealth(h) + "\n";
+        if (report != lastReport_) std::cerr << report;  // once per change, for scripts watching stderr
+        lastReport_ = report;
     }
 
     // The panel's text and controls at `scale`, and the overlay with them.
@@ -530,31 +425,6 @@ private:
         if (scale != uiScale_) applyUiScale(scale);
     }
 
-    // The time since the last window frame, while the window is busy (a
-    // pause of a second or more is idle time, not a slow frame).
-    void noteFrame() {
-        auto now = Clock::now();
-        double ms = std::chrono::duration<double, std::milli>(now - lastUiFrame_).count();
-        if (ms < 1000 && frameIntervals_.size() < 1000000) frameIntervals_.push_back(ms);
-        lastUiFrame_ = now;
-    }
-
-    // The `frames` command: how long the window took between frames since
-    // the last `frames` (what a drag feels like), and how long the last
-    // picture took to finish after its last change. tools/bench-viewer.sh reads it.
-    void printFrameStats() {
-        std::vector<double> d = frameIntervals_;
-        frameIntervals_.clear();
-        std::sort(d.begin(), d.end());
-        auto at = [&](double q) { return d.empty() ? 0.0 : d[std::min(d.size() - 1, size_t(q * double(d.size())))]; };
-        std::cout << fmt::format("frames: {} drawn, median {:.1f} ms, p95 {:.1f} ms, max {:.1f} ms; "
-                                 "last picture {:.1f} ms after its last change ({:.1f} ms drawing, {} slice{}){}\n",
-                                 d.size(), at(0.5), at(0.95), d.empty() ? 0.0 : d.back(), lastPictureMs_,
-                                 s_.lastFrameMs, lastPictureSlices_, lastPictureSlices_ == 1 ? "" : "s",
-                                 drawing_ ? "; a picture is being drawn" : "");
-        std::cout.flush();
-    }
-
     // Runs one command line; true to quit. `onlyAsked`: it only printed
     // (ViewCommand::onlyAsks).
     bool execute(const std::string& line, bool& onlyAsked) {
@@ -569,45 +439,21 @@ private:
     }
 
     bool apply(const ViewCommand& c) {
+        std::string said;
+        if (core_.apply(c, said)) {  // what only changes what is shown (view/viewer_core.h)
+            std::istringstream lines(said);
+            for (std::string line; std::getline(lines, line);) std::cerr << "glimmer view: " << line << "\n";
+            return false;
+        }
         switch (c.kind) {
         case ViewCommand::Kind::Quit: return true;
         case ViewCommand::Kind::Help: std::cerr << helpText(); break;
-        case ViewCommand::Kind::Frames: printFrameStats(); break;
+        case ViewCommand::Kind::Frames: std::cout << core_.frameStats() << std::flush; break;
         case ViewCommand::Kind::Scale: applyUiScale(float(c.value)); break;
         case ViewCommand::Kind::Reload: load("reloaded"); break;
-        case ViewCommand::Kind::Set: {
-            if (!s_.good) break;
-            Diagnostics d;
-            s_.values->applySet(s_.good->plan, c.name + "=" + c.text, d);
-            std::ostringstream out;
-            printDiagnostics(d, s_.good->sources, out);
-            for (const auto& diag : d.all()) std::cerr << "glimmer view: " << severityName(diag.severity) << ": " << diag.message << "\n";
-            break;
-        }
         case ViewCommand::Kind::Save: save(c.name.empty() ? nextFreeName("glimmer", ".png") : c.name, c.unit == -2); break;
-        case ViewCommand::Kind::Show: textureOnUnit("show", c.unit, s_.shownTexture); break;
-        case ViewCommand::Kind::Values: s_.showValues = c.on; break;
-        case ViewCommand::Kind::Probe:
-            if (!c.report) s_.probe = c.on;
-            else if (!s_.probe) std::cerr << "glimmer view: probe: off (probe on turns it on)\n";
-            else if (s_.probeText.empty()) std::cerr << "glimmer view: probe: the pointer is not over the picture\n";
-            else std::cerr << "glimmer view: probe " << s_.probeText << "\n";
-            break;
-        case ViewCommand::Kind::Split:
-            if (c.on && textureOnUnit("split", c.unit, s_.compareLeft) && textureOnUnit("split", c.right, s_.compareRight))
-                s_.compare = true;
-            else if (!c.on) s_.compare = false;
-            break;
+        default: break;
         }
-        return false;
-    }
-
-    // The texture on a texture unit (the screen for -1) into `texture`;
-    // false, with a message, when no target is on that unit.
-    bool textureOnUnit(const char* command, int unit, int& texture) {
-        if (unit < 0) return texture = -1, true;
-        if (s_.good && s_.good->plan.finalUnits.count(unit)) return texture = s_.good->plan.finalUnits.at(unit), true;
-        std::cerr << "glimmer view: " << command << ": no texture on unit " << unit << "\n";
         return false;
     }
 
@@ -619,36 +465,16 @@ private:
             std::cerr << "glimmer view: nothing to save yet\n";
             return;
         }
-        Image img;
-        if (hardcopy) {
-            img = renderAtSize(s_.hardcopy[0], s_.hardcopy[1]);
-        } else {
-            // A command may have changed values since the last frame, and a
-            // frame may be under way: what is saved is the finished picture.
-            renderScene(std::numeric_limits<double>::infinity());
-            img = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTexture(s_.shownTexture);
-        }
+        // A command may have changed values since the last frame, and a
+        // frame may be under way: what is saved is the finished picture.
+        Image img = hardcopy ? core_.renderAtSize(s_.hardcopy[0], s_.hardcopy[1]) : core_.finishedPicture();
+        noteHealth();
         if (img.empty()) return;
         if (s_.showValues) layOver(img, overlayLayer(), kOverlayAt, kOverlayAt);
         std::string why;
         if (writePng(file, img, why)) s_.status = "saved " + file;
         else s_.status = why;
         std::cerr << "glimmer view: " << s_.status << "\n";
-    }
-
-    // glman's hardcopy: the same script and values drawn at any size on a
-    // renderer of its own, which goes away afterwards.
-    Image renderAtSize(int w, int h) {
-        if (w < 1 || h < 1 || w > 16384 || h > 16384) return {};
-        Diagnostics diags;
-        LoadedScript ls;
-        std::unique_ptr<Renderer> r;
-        if (!prepareAt(w, h, ls, r, diags)) return {};
-        UniformValues v(ls.plan);
-        v.carryOver(s_.good->plan, *s_.values, ls.plan);
-        r->setSceneTransform(sceneMatrix(s_));
-        r->render(v, s_.time);
-        return r->readScreen();
     }
 
     const ViewOptions& options_;
@@ -660,15 +486,14 @@ private:
     int panelW_ = 0, panelH_ = 0;
     bool fullscreen_ = false;
     int savedX_ = 0, savedY_ = 0;
-    ViewerState s_;
+    ViewerCore core_;  // the script, its picture and every step on them (view/viewer_core.h)
+    ViewerState& s_;   // core_'s
     FileWatch watch_;
     Clock::time_point lastHealth_{};
+    std::uint64_t healthVersion_ = 0;  // the picture the health badge was measured on
     std::string lastReport_;
     std::set<std::string> printedWarnings_;
     PictureDrag drag_;
-    std::uint64_t pictureVersion_ = 0, probeVersion_ = ~0ull;
-    int probeTexture_ = -2;
-    Image probeImage_;
     std::unique_ptr<WindowFrame> frame_;  // clears the window; the viewer itself calls no GL
     std::unique_ptr<UiTexture> overlayTexture_;  // the overlay layer, for ImGui to draw
     Image overlay_;
@@ -676,14 +501,8 @@ private:
     unsigned overlayId_ = 0;
     float overlayPx_ = 15.f;
     float uiScale_ = 1.f;
-    // The frame being drawn a slice at a time (none when the picture is done).
-    std::optional<SlicedFrame> drawing_;
     const double sliceMs_ = sliceBudgetMs();
-    bool firstFrame_ = true;  // the next frame is a new renderer's first: drawn whole
-    Clock::time_point drawingSince_{}, lastUiFrame_{}, lastInput_{};
-    int slices_ = 0, lastPictureSlices_ = 0;
-    double lastPictureMs_ = 0;
-    std::vector<double> frameIntervals_;  // ms between window frames while busy, for `frames`
+    Clock::time_point lastInput_{};
 };
 
 // The window's starting size: --size, else the script's WindowSize, else 600x600.

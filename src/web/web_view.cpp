@@ -1,9 +1,10 @@
-// The page's live viewer: `glimmer view` on the page's canvas. The picture
-// on the left at its own size, the same Dear ImGui panel as the desktop's
-// on its right (view/panel.h), laid out by the desktop's own layoutWindow.
-// A slider redraws only the passes it reaches (plan/dependencies.h); a load
-// with errors keeps the last good picture and the slider values
-// (view/viewer_state.h adoptScript), as the desktop viewer does.
+// The page's live viewer: `glimmer view` on the page's canvas, a thin shell
+// around the desktop's own viewer core (view/viewer_core.h): loading that
+// keeps the last good picture and the slider values, drawing the passes a
+// slider reaches in slices so the page keeps taking input while a heavy
+// blur redraws, hardcopies and the probe are the core's, the same code as
+// the window's. The picture is on the left at its own size, the same Dear
+// ImGui panel (view/panel.h) on its right, laid out by layoutWindow.
 //
 // The page drives it (src/web/page/glimmer-page.js); there is no loop in
 // here, so the page decides when to draw (requestAnimationFrame) and the
@@ -40,6 +41,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -55,16 +57,26 @@
 #include "gl/window_frame.h"
 #include "view/panel.h"
 #include "view/view_model.h"
+#include "view/view_keys.h"
+#include "view/viewer_core.h"
 #include "web/page_state.h"
 
 namespace {
 
 using namespace glimmer;
 
+GetProcAddress pageProcs() {
+    return [](const char* n) { return glimmer_web::pageContext()->getProcAddress(n); };
+}
+
 struct WebViewer {
-    ViewerState s;
-    std::unique_ptr<WindowFrame> frame;
+    // Stand-ins on, as in `glimmer view`: a missing image or model is a
+    // warning and a stand-in, not a page that cannot open the script.
+    explicit WebViewer(const std::string& path) : script(path), core({path, {}, {}, true, false}, pageProcs()) {}
     std::string script;
+    ViewerCore core;
+    ViewerState& s = core.state();
+    std::unique_ptr<WindowFrame> frame;
     int width = 512, height = 512;  // the picture, as asked
     int panelW = 0, panelH = 0;     // measured from the last frame's panel
     WindowLayout layout;
@@ -75,10 +87,6 @@ struct WebViewer {
     bool imguiReady = false;
 };
 std::unique_ptr<WebViewer> viewer;
-
-GetProcAddress pageProcs() {
-    return [](const char* n) { return glimmer_web::pageContext()->getProcAddress(n); };
-}
 
 // For the page's editor: each diagnostic as one line of tab-separated
 // fields, severity, file, line, column, message (tabs and line breaks in a
@@ -106,28 +114,21 @@ std::vector<std::string> textFilesOf(const std::string& script, const Plan& plan
     return files;
 }
 
-// The script at the asked size on a renderer of its own; every target kept,
-// as the desktop viewer keeps them for its pass inspector.
+// The script at the asked size (the core keeps every target, for the pass
+// inspector, as the desktop does).
 int load(WebViewer& v, const std::vector<std::string>& sets, std::ostringstream& out) {
     Diagnostics diags;
-    LoadedScript next;
-    ScriptRequest request;
-    request.script = v.script;
-    request.plan.width = v.width;
-    request.plan.height = v.height;
-    for (int unit = 0; unit < 32; ++unit) request.plan.keepTargets.insert(unit);
-    auto renderer = prepareScript(request, pageProcs(), diags, next);
-    keepMessages(v.s, diags, next.sources);
-    printDiagnostics(diags, next.sources, out);
+    SourceTexts sources;
+    Plan plan;
+    v.core.setSets(sets);
+    bool loaded = v.core.load(v.width, v.height, diags, sources, &plan);
+    printDiagnostics(diags, sources, out);
     v.messages = messageLines(diags);
-    if (!next.plan.programs.empty() || v.files.empty()) v.files = textFilesOf(v.script, next.plan);
-    if (!renderer) {
-        if (v.s.errors.empty()) v.s.errors.push_back({"the script could not be loaded", v.script});
-        v.s.failed = true;
+    if (!plan.programs.empty() || v.files.empty()) v.files = textFilesOf(v.script, plan);
+    if (!loaded) {
         v.s.status = "keeping the last good picture";
         return std::ifstream(v.script).good() ? 1 : 2;  // 2: the script itself could not be read, as `render` exits
     }
-    adoptScript(v.s, std::move(next), std::move(renderer), sets, diags);
     v.s.status = "loaded";
     return 0;
 }
@@ -143,49 +144,16 @@ void startImGui(WebViewer& v) {
     v.imguiReady = true;
 }
 
-// The desktop's renderScene, whole frames: the page's frames are the
-// browser's, and a heavy pass holds the tab no longer than a render would.
-void drawChanged(WebViewer& v) {
-    ViewerState& s = v.s;
-    if (!s.renderer || !s.good) return;
-    Change change = changeSinceDrawn(s, true);
-    s.sceneMoved = false;
-    std::vector<bool> only = passesToRun(s.good->plan, change);
-    bool any = false;
-    for (size_t p = 0; p < only.size(); ++p)
-        if (only[p]) v.drawn.insert(int(p)), any = true;
-    if (!any) return;
-    s.renderer->setSceneTransform(sceneMatrix(s));
-    std::vector<PassTiming> timings;
-    s.renderer->render(*s.values, s.time, &timings, &only);
-    s.renderer->finish();
-    s.lastTimings = timings;
-    s.lastFrameMs = 0;
-    for (const auto& t : timings) s.lastFrameMs += t.ms;
-    s.drawnWith = s.values;
-    s.drawnTime = s.time;
-    s.drawAll = false;
-}
+// A slice of the frame under way per browser frame (view/viewer_core.h):
+// short while the pointer is down or the wheel turns, so a slider dragged
+// over a heavy blur keeps its input; longer once it rests.
+double gSliceMs = kSliceMs;  // ?slice-ms=0 (whole frames, as before slices) for tools/page-input-latency.mjs
 
-// glman's hardcopy: the script at the panel's size on a renderer of its
-// own, with the slider values carried over.
-Image hardcopy(WebViewer& v) {
-    ViewerState& s = v.s;
-    int w = s.hardcopy[0], h = s.hardcopy[1];
-    if (!s.good || w < 1 || h < 1 || w > 8192 || h > 8192) return {};
-    Diagnostics diags;
-    LoadedScript ls;
-    ScriptRequest request;
-    request.script = v.script;
-    request.plan.width = w;
-    request.plan.height = h;
-    auto r = prepareScript(request, pageProcs(), diags, ls);
-    if (!r) return {};
-    UniformValues values(ls.plan);
-    values.carryOver(s.good->plan, *s.values, ls.plan);
-    r->setSceneTransform(sceneMatrix(s));
-    r->render(values, s.time);
-    return r->readScreen();
+void drawChanged(WebViewer& v) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool active = io.MouseDown[0] || io.MouseWheel != 0;
+    v.core.draw(active ? gSliceMs : gSliceMs * kIdleSliceFactor);
+    for (int p : v.core.takeDrawnPasses()) v.drawn.insert(p);
 }
 
 int applyAsked(WebViewer& v, const std::vector<ViewCommand>& asked) {
@@ -194,11 +162,10 @@ int applyAsked(WebViewer& v, const std::vector<ViewCommand>& asked) {
         if (c.kind == ViewCommand::Kind::Reload) out |= 1;
         if (c.kind != ViewCommand::Kind::Save || !v.s.renderer) continue;
         if (c.unit == -2) {
-            glimmer_web::pagePicture() = hardcopy(v);
+            glimmer_web::pagePicture() = v.core.renderAtSize(v.s.hardcopy[0], v.s.hardcopy[1]);
             out |= 4;
         } else {
-            glimmer_web::pagePicture() =
-                v.s.shownTexture < 0 ? v.s.renderer->readScreen() : v.s.renderer->readTexture(v.s.shownTexture);
+            glimmer_web::pagePicture() = v.core.finishedPicture();
             out |= 2;
         }
     }
@@ -216,11 +183,11 @@ glimmer::ViewerState* viewerState() { return viewer ? &viewer->s : nullptr; }
 
 bool viewerKey(const char* key) {
     if (!viewer || !key) return false;
-    std::string k = key;
-    if (k == "r" || k == "R") viewer->keyAsks |= 1;
-    else if (k == "s" || k == "S") viewer->keyAsks |= 2;
-    else if (k == " ") viewer->s.playing = !viewer->s.playing;
-    else if (k == "0") resetView(viewer->s);
+    // The window's keys (view/view_keys.h); quitting and fullscreen are the browser's.
+    KeyAction action = keyAction(key);
+    if (applyStateKey(action, viewer->s)) return true;
+    if (action == KeyAction::Reload) viewer->keyAsks |= 1;
+    else if (action == KeyAction::Save) viewer->keyAsks |= 2;
     else return false;
     return true;
 }
@@ -240,9 +207,8 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_open(const char* path, int width, int heig
     if (!viewer || viewer->script != asked || viewer->width != width || viewer->height != height) {
         bool hadImGui = viewer && viewer->imguiReady;
         viewer.reset();
-        viewer = std::make_unique<WebViewer>();
+        viewer = std::make_unique<WebViewer>(asked);
         viewer->imguiReady = hadImGui;
-        viewer->script = asked;
         viewer->width = width > 0 ? width : 512;
         viewer->height = height > 0 ? height : 512;
     }
@@ -270,6 +236,11 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     ImGui_ImplOpenGL3_NewFrame();
     ImGui::NewFrame();
     drawChanged(v);
+    // The probe, as on the desktop: the values under the pointer, in a tooltip.
+    if (!io.WantCaptureMouse && glimmer_web::pointerOverPicture(io.MousePos.x, io.MousePos.y) && !io.MouseDown[0])
+        v.core.probe(io.MousePos.x, io.MousePos.y, v.width, v.height);
+    else
+        s.probeText.clear();
     auto asked = drawPanelWindow(s, float(v.layout.panelX), float(v.layout.windowH), v.panelW, v.panelH);
     for (auto [bit, kind] : {std::pair{1, ViewCommand::Kind::Reload}, std::pair{2, ViewCommand::Kind::Save}})
         if (v.keyAsks & bit) {
@@ -331,10 +302,19 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_drawn() {
 
 EMSCRIPTEN_KEEPALIVE int glimmer_view_snapshot() {
     if (!viewer || !viewer->s.renderer) return 0;
-    const ViewerState& s = viewer->s;
-    glimmer_web::pagePicture() = s.shownTexture < 0 ? s.renderer->readScreen() : s.renderer->readTexture(s.shownTexture);
+    glimmer_web::pagePicture() = viewer->core.finishedPicture();
     return glimmer_web::pagePicture().empty() ? 0 : 1;
 }
+
+// A slice's budget in ms; 0 draws every frame whole (the page before
+// slices), for the input-latency benchmark's reference run.
+EMSCRIPTEN_KEEPALIVE void glimmer_view_slice_ms(double ms) {
+    gSliceMs = ms > 0 ? ms : std::numeric_limits<double>::infinity();
+}
+
+// The probe's text now ("" when off or not over the picture): what the
+// tooltip by the pointer says.
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_probe() { return viewer ? viewer->s.probeText.c_str() : ""; }
 
 // The page's Save sheet, as `glimmer sheet SCRIPT --vary ...` draws it: the
 // cells at the picture's size, the other uniforms at the panel's values

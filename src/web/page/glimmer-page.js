@@ -118,6 +118,8 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
   document.body.dataset.moduleReadyMs = performance.now().toFixed(0);
   // ?no-float-targets: behave as a browser without EXT_color_buffer_float.
   if (query.has("no-float-targets")) glimmer._glimmer_without_float_targets();
+  // ?slice-ms=N: the live view's slice budget (0: whole frames), for tools/page-input-latency.mjs.
+  if (query.has("slice-ms")) glimmer._glimmer_view_slice_ms(Number(query.get("slice-ms")) || 0);
   const FS = glimmer.FS;
   const check = glimmer.cwrap("glimmer_check", "number", ["string"]);
   const render = glimmer.cwrap("glimmer_render", "number", ["string", "number", "number", "string"]);
@@ -384,6 +386,7 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
     value: (name) => viewValue(name),
     control: (name) => viewControl(name).split(" ").filter(Boolean).map(Number),
     drawn: () => viewDrawn(),
+    probe: () => glimmer.UTF8ToString(glimmer._glimmer_view_probe()),
     errors: () => glimmer._glimmer_view_errors(),
     snapshot: () => { if (glimmer._glimmer_view_snapshot()) keepPicture(); return picture.dataset.png || ""; },
     readFile: (path) => FS.readFile(path, { encoding: "utf8" }),

@@ -1,0 +1,218 @@
+#include "view/viewer_core.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+
+#include <fmt/format.h>
+
+#include "plan/dependencies.h"
+
+namespace glimmer {
+
+double sliceBudgetMs() {
+    const char* e = std::getenv("GLIMMER_SLICE_MS");
+    if (!e || !*e) return kSliceMs;
+    char* end = nullptr;
+    double v = std::strtod(e, &end);
+    if (end == e || *end || !(v >= 0) || v > 1e6) return kSliceMs;
+    return v == 0 ? std::numeric_limits<double>::infinity() : v;
+}
+
+ViewerCore::ViewerCore(ViewerSource source, GetProcAddress getProc)
+    : source_(std::move(source)), getProc_(std::move(getProc)) {}
+
+bool ViewerCore::prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer,
+                           Diagnostics& diags) {
+    ScriptRequest request;
+    request.script = source_.script;
+    request.plan.includeDirs = source_.includeDirs;
+    request.plan.standIns = source_.standIns;
+    request.plan.sandbox = source_.sandbox;
+    request.plan.width = w;
+    request.plan.height = h;
+    // Every target can be looked at in the pass inspector, so every pass
+    // that draws into one runs, read by a later pass or not.
+    for (int unit = 0; unit < 32; ++unit) request.plan.keepTargets.insert(unit);
+    renderer = prepareScript(request, getProc_, diags, next);
+    return renderer != nullptr;
+}
+
+bool ViewerCore::load(int w, int h, Diagnostics& diags, SourceTexts& sources, Plan* plan) {
+    LoadedScript next;
+    std::unique_ptr<Renderer> renderer;
+    prepareAt(w, h, next, renderer, diags);
+    keepMessages(s_, diags, next.sources);
+    sources = next.sources;
+    if (plan) *plan = next.plan;
+    if (!renderer) {
+        if (s_.errors.empty()) s_.errors.push_back({"the script could not be loaded", source_.script});
+        s_.failed = true;
+        return false;
+    }
+    adoptScript(s_, std::move(next), std::move(renderer), source_.sets, diags);
+    drawing_.reset();  // its passes belong to the old plan
+    firstFrame_ = true;
+    return true;
+}
+
+bool ViewerCore::draw(double budgetMs) {
+    // A script's first picture is drawn whole: until it is, its targets and
+    // screen hold nothing to show (a reload is one pause, not a drag).
+    if (firstFrame_) {
+        budgetMs = std::numeric_limits<double>::infinity();
+        firstFrame_ = false;
+    }
+    if (!s_.renderer || !s_.good) return false;
+    const Plan& plan = s_.good->plan;
+    Change change = changeSinceDrawn(s_, false);
+    // Time alone never replaces a frame under way: a heavy animated scene
+    // would otherwise restart every window frame and never finish one.
+    if (s_.time != s_.drawnTime && (!drawing_ || !change.programs.empty() || change.screen || change.everything))
+        change = changeSinceDrawn(s_, true);
+    s_.sceneMoved = false;
+    std::vector<bool> only = passesToRun(plan, change);
+    bool any = false;
+    for (size_t p = 0; p < only.size(); ++p)
+        if (only[p]) any = true, drawnPasses_.insert(int(p));
+    if (any) {
+        if (drawing_) {  // the stale work is dropped, never half kept; what it had not finished is redone
+            std::vector<bool> left = drawing_->unfinished();
+            for (size_t p = 0; p < only.size() && p < left.size(); ++p) only[p] = only[p] || left[p];
+        }
+        s_.renderer->setSceneTransform(sceneMatrix(s_));
+        drawing_.emplace(s_.renderer->startFrame(*s_.values, s_.time, std::move(only)));
+        drawingSince_ = Clock::now();
+        slices_ = 0;
+        s_.drawnWith = s_.values;
+        s_.drawnTime = s_.time;
+        s_.drawAll = false;
+    }
+    if (!drawing_) return false;
+    ++slices_;
+    if (!s_.renderer->renderSlice(*drawing_, budgetMs)) {
+        s_.drawing = float(s_.renderer->progress(*drawing_));
+        return false;
+    }
+    s_.drawing = -1;
+    s_.lastTimings = drawing_->timings;
+    s_.lastFrameMs = 0;
+    for (const auto& t : s_.lastTimings) s_.lastFrameMs += t.ms;
+    lastPictureMs_ = std::chrono::duration<double, std::milli>(Clock::now() - drawingSince_).count();
+    lastPictureSlices_ = slices_;
+    drawing_.reset();
+    ++pictureVersion_;
+    return true;
+}
+
+Image ViewerCore::finishedPicture() {
+    if (!s_.renderer || !s_.good) return {};
+    draw(std::numeric_limits<double>::infinity());
+    return s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTexture(s_.shownTexture);
+}
+
+Image ViewerCore::renderAtSize(int w, int h) {
+    if (!s_.good || w < 1 || h < 1 || w > 16384 || h > 16384) return {};
+    Diagnostics diags;
+    LoadedScript ls;
+    std::unique_ptr<Renderer> r;
+    if (!prepareAt(w, h, ls, r, diags)) return {};
+    UniformValues v(ls.plan);
+    v.carryOver(s_.good->plan, *s_.values, ls.plan);
+    r->setSceneTransform(sceneMatrix(s_));
+    r->render(v, s_.time);
+    return r->readScreen();
+}
+
+const std::string& ViewerCore::probe(double x, double y, int pw, int ph, bool tooltip) {
+    s_.probeText.clear();
+    if (!s_.probe || !s_.renderer || s_.compare || pw < 1 || ph < 1) return s_.probeText;
+    if (probeVersion_ != pictureVersion_ || probeTexture_ != s_.shownTexture) {
+        probeImage_ = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTextureFloat(s_.shownTexture);
+        probeVersion_ = pictureVersion_;
+        probeTexture_ = s_.shownTexture;
+    }
+    const Image& img = probeImage_;
+    if (img.empty()) return s_.probeText;
+    double scale = std::min(double(pw) / img.width, double(ph) / img.height);
+    double ox = (pw - img.width * scale) / 2, oy = (ph - img.height * scale) / 2;
+    int ix = int(std::floor((x - ox) / scale)), iy = int(std::floor((y - oy) / scale));
+    if (ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return s_.probeText;
+    size_t i = (size_t(iy) * size_t(img.width) + size_t(ix)) * 4;
+    float v[4];
+    for (int c = 0; c < 4; ++c) v[c] = img.type == Image::Type::F32 ? img.f32[i + size_t(c)] : img.u8[i + size_t(c)] / 255.f;
+    s_.probeText = fmt::format("({}, {}) of {}: r {:.4g}  g {:.4g}  b {:.4g}  a {:.4g}", ix, iy,
+                               s_.shownTexture < 0 ? std::string("screen") : fmt::format("texture {}", s_.shownTexture),
+                               v[0], v[1], v[2], v[3]);
+    if (tooltip) {
+        ImGui::BeginTooltip();
+        ImGui::TextUnformatted(s_.probeText.c_str());
+        ImGui::EndTooltip();
+    }
+    return s_.probeText;
+}
+
+void ViewerCore::noteFrame() {
+    auto now = Clock::now();
+    double ms = std::chrono::duration<double, std::milli>(now - lastUiFrame_).count();
+    if (ms < 1000 && frameIntervals_.size() < 1000000) frameIntervals_.push_back(ms);
+    lastUiFrame_ = now;
+}
+
+std::string ViewerCore::frameStats() {
+    std::vector<double> d;
+    d.swap(frameIntervals_);
+    std::sort(d.begin(), d.end());
+    auto at = [&](double q) { return d.empty() ? 0.0 : d[std::min(d.size() - 1, size_t(q * double(d.size())))]; };
+    return fmt::format("frames: {} drawn, median {:.1f} ms, p95 {:.1f} ms, max {:.1f} ms; "
+                       "last picture {:.1f} ms after its last change ({:.1f} ms drawing, {} slice{}){}\n",
+                       d.size(), at(0.5), at(0.95), d.empty() ? 0.0 : d.back(), lastPictureMs_, s_.lastFrameMs,
+                       lastPictureSlices_, lastPictureSlices_ == 1 ? "" : "s",
+                       drawing_ ? "; a picture is being drawn" : "");
+}
+
+bool ViewerCore::textureOnUnit(const char* command, int unit, int& texture, std::string& said) const {
+    if (unit < 0) return texture = -1, true;
+    if (s_.good && s_.good->plan.finalUnits.count(unit)) return texture = s_.good->plan.finalUnits.at(unit), true;
+    said = fmt::format("{}: no texture on unit {}", command, unit);
+    return false;
+}
+
+bool ViewerCore::apply(const ViewCommand& c, std::string& said) {
+    said.clear();
+    switch (c.kind) {
+    case ViewCommand::Kind::Set: {
+        if (!s_.good) return true;
+        Diagnostics d;
+        s_.values->applySet(s_.good->plan, c.name + "=" + c.text, d);
+        for (const auto& diag : d.all()) said += std::string(severityName(diag.severity)) + ": " + diag.message + "\n";
+        if (!said.empty()) said.pop_back();
+        return true;
+    }
+    case ViewCommand::Kind::Show: textureOnUnit("show", c.unit, s_.shownTexture, said); return true;
+    case ViewCommand::Kind::Values: s_.showValues = c.on; return true;
+    case ViewCommand::Kind::Probe:
+        if (!c.report) s_.probe = c.on;
+        else if (!s_.probe) said = "probe: off (probe on turns it on)";
+        else if (s_.probeText.empty()) said = "probe: the pointer is not over the picture";
+        else said = "probe " + s_.probeText;
+        return true;
+    case ViewCommand::Kind::Split:
+        if (c.on && textureOnUnit("split", c.unit, s_.compareLeft, said) &&
+            textureOnUnit("split", c.right, s_.compareRight, said))
+            s_.compare = true;
+        else if (!c.on) s_.compare = false;
+        return true;
+    default: return false;
+    }
+}
+
+std::set<int> ViewerCore::takeDrawnPasses() {
+    std::set<int> out;
+    out.swap(drawnPasses_);
+    return out;
+}
+
+}  // namespace glimmer
