@@ -96,6 +96,14 @@ bool loadAssets(const Plan& plan, bool everything, Diagnostics& diags, SourceTex
         for (const auto& stage : plan.programs[i].stages) {
             std::string why;
             auto text = readShader(stage, why);
+            // A UTF-8 byte-order mark (Notepad writes one) before #version:
+            // every GLSL compiler refuses it ("unexpected HASH_TOKEN"), the
+            // student sees nothing wrong. Three blanks keep the columns.
+            if (text && text->compare(0, 3, "\xEF\xBB\xBF") == 0) {
+                text->replace(0, 3, "   ");
+                diags.note(stage.path, {1, 1}, "a UTF-8 byte-order mark starts this file (an editor put it there); "
+                                               "read as blanks, since GLSL compilers refuse it");
+            }
             if (text) sources.add(stage.path, *text);
             else diags.error(file, stage.loc, fmt::format("cannot read shader '{}': it {}", stage.shown, why));
             out.shaderTexts[i].push_back(std::move(text));

@@ -13,11 +13,17 @@
 namespace glimmer {
 namespace fs = std::filesystem;
 
+std::string entryPath(const std::string& name) {
+    std::string out = name;
+    for (char& c : out)
+        if (c == '\\') c = '/';
+    return out;
+}
+
 std::string unsafeEntryName(const std::string& name) {
     if (name.empty()) return "has an empty name";
     if (name.size() > 1024) return "has a name longer than 1024 characters";
     if (name.find('\0') != std::string::npos) return "has a NUL in its name";
-    if (name.find('\\') != std::string::npos) return "has a backslash in its name (a Windows path)";
     if (name[0] == '/') return "is an absolute path";
     if (name.size() >= 2 && name[1] == ':') return "is an absolute path (a drive letter)";
     size_t start = 0;
@@ -77,7 +83,7 @@ bool safeUnzip(const std::string& zipPath, const std::string& destDir, const Unz
         zip_stat_init(&st);
         if (zip_stat_index(z.get(), i, 0, &st) != 0 || !(st.valid & ZIP_STAT_NAME))
             return refuse(zipPath, destDir, fmt::format("entry {} cannot be read", i), error);
-        const std::string name = st.name;
+        const std::string name = entryPath(st.name);
         if (std::string why = unsafeEntryName(name); !why.empty())
             return refuse(zipPath, destDir, fmt::format("entry '{}' {}", name, why), error);
         if (isSymlink(z.get(), i))

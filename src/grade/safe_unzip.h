@@ -15,8 +15,13 @@ struct UnzipLimits {
     std::uint64_t maxTotalBytes = 256ull << 20;  // every file together, unpacked
 };
 
-// Why a name cannot be unpacked inside its folder ("is an absolute path",
-// "leaves its folder (..)", ...), or "" when it can. Pure.
+// An entry's name with older Windows tools' backslashes read as the folder
+// separators they meant ("week3\\bloom.glib" -> "week3/bloom.glib", issue 29);
+// checked by unsafeEntryName after that, so "a\\..\\b" still leaves its folder.
+std::string entryPath(const std::string& name);
+
+// Why a name (as entryPath gives it) cannot be unpacked inside its folder
+// ("is an absolute path", "leaves its folder (..)", ...), or "" when it can. Pure.
 std::string unsafeEntryName(const std::string& name);
 
 // Unpacks `zipPath` into `destDir` (made if missing). On any refusal nothing

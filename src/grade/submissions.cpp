@@ -66,6 +66,8 @@ std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, 
     return out;
 }
 
+constexpr int kScriptSearchDepth = 8;
+
 std::string findScript(const std::string& folder, std::string& error) {
     error.clear();
     fs::path root(folder);
@@ -75,7 +77,7 @@ std::string findScript(const std::string& folder, std::string& error) {
         error = fmt::format("{}: error: not a folder", folder);
         return "";
     }
-    std::vector<std::string> found;
+    std::vector<std::string> found, others;
     int looked = 0;
     auto it = fs::recursive_directory_iterator(root, fs::directory_options::skip_permission_denied, ec);
     for (; !ec && it != fs::recursive_directory_iterator(); it.increment(ec)) {
@@ -88,14 +90,25 @@ std::string findScript(const std::string& folder, std::string& error) {
             if (it->is_directory(ec)) it.disable_recursion_pending();
             continue;
         }
-        if (it->is_directory(ec) && it.depth() >= 2) it.disable_recursion_pending();  // three levels: 0, 1, 2
-        if (it->is_regular_file(ec) && !it->is_symlink(ec) && hasExtension(p, ".glib"))
-            found.push_back(p.lexically_relative(root).string());
+        // Eight levels (0 to 7): a zip of a zip's folder of a course folder
+        // still has its script found (issue 29: three levels down was "no
+        // .glib script"); the file count above bounds the walk.
+        if (it->is_directory(ec) && it.depth() >= kScriptSearchDepth - 1) it.disable_recursion_pending();
+        if (it->is_regular_file(ec) && !it->is_symlink(ec)) {
+            if (hasExtension(p, ".glib")) found.push_back(p.lexically_relative(root).string());
+            else if (others.size() < 6) others.push_back(p.lexically_relative(root).string());
+        }
     }
     std::sort(found.begin(), found.end());
     if (found.size() == 1) return (root / found[0]).string();
     if (found.empty()) {
-        error = fmt::format("{}: error: no .glib script in this submission", folder);
+        // What was there instead: a script saved as .txt, a folder of shaders only.
+        std::sort(others.begin(), others.end());
+        std::string names;
+        for (size_t k = 0; k < others.size() && k < 5; ++k) names += (names.empty() ? "" : ", ") + others[k];
+        error = others.empty() ? fmt::format("{}: error: no .glib script in this submission (it holds no file)", folder)
+                               : fmt::format("{}: error: no .glib script in this submission; it holds {}{}", folder, names,
+                                             others.size() > 5 ? ", ..." : "");
     } else {
         std::string names;
         for (const auto& f : found) names += (names.empty() ? "" : ", ") + f;

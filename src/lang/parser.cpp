@@ -32,6 +32,9 @@ public:
             diags_.error(file_, budget.overAt, overMemoryBudget(budget.used, maxBytes_));
             return script;
         }
+        if (text.substr(0, 3) == "\xEF\xBB\xBF")  // read as nothing by the lexer; said, as for shaders
+            diags_.note(file_, {1, 1}, "a UTF-8 byte-order mark starts this file (an editor put it there); read as "
+                                       "nothing");
         for (const LogicalLine& line : lines) {
             const Token& first = line.tokens.front();
             if (first.kind != Token::Kind::Word) {

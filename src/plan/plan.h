@@ -193,4 +193,9 @@ bool relativeSize(const std::string& word, int width, int height, int& out);
 std::string resolveFile(const std::string& scriptFile, const std::string& name,
                         const std::vector<std::string>& includeDirs, std::vector<std::string>* tried);
 
+// A file in one of `folders` whose name is `name` but for letter case
+// ('bright.frag' for 'Bright.frag', written where names ignore case), as
+// `name` would give it; "" when none. Reads at most 2000 names a folder.
+std::string sameNameButCase(const std::vector<std::string>& folders, const std::string& name);
+
 }  // namespace glimmer

@@ -230,6 +230,9 @@ bool Builder::notFound(SourceLoc loc, const char* what, const std::string& name,
     std::string where;
     for (const auto& d : tried) where += (where.empty() ? "" : ", ") + d;
     std::string message = fmt::format("cannot find {} '{}' (looked in {})", what, name, where);
+    // Written on Windows or macOS, where 'Bright.frag' opens bright.frag.
+    if (std::string other = sameNameButCase(tried, name); !other.empty())
+        message += fmt::format("; did you mean '{}'?", other);
     bool useStandIn = options_.standIns && std::string_view(what) != "shader";
     if (useStandIn) diags_.warning(file(), loc, message + "; " + standIn + " (--stand-ins)");
     else diags_.error(file(), loc, message);

@@ -27,4 +27,27 @@ std::string resolveFile(const std::string& scriptFile, const std::string& name,
     return {};
 }
 
+std::string sameNameButCase(const std::vector<std::string>& folders, const std::string& name) {
+    fs::path p(name);
+    if (p.is_absolute() || name.find("..") != std::string::npos || !p.has_filename()) return {};
+    auto lower = [](std::string t) {
+        for (char& c : t)
+            if (c >= 'A' && c <= 'Z') c = char(c - 'A' + 'a');
+        return t;
+    };
+    const std::string want = lower(p.filename().string());
+    for (const auto& folder : folders) {
+        std::error_code ec;
+        const fs::path dir = fs::path(folder) / p.parent_path();
+        int looked = 0;  // a folder of a million files is not read whole for a hint
+        for (auto it = fs::directory_iterator(dir, ec); !ec && it != fs::directory_iterator() && ++looked <= 2000;
+             it.increment(ec)) {
+            const std::string have = it->path().filename().string();
+            if (have != p.filename().string() && lower(have) == want && it->is_regular_file(ec))
+                return (p.parent_path() / have).string();
+        }
+    }
+    return {};
+}
+
 }  // namespace glimmer

@@ -140,7 +140,8 @@ TEST(CliGrade, EachKindOfSubmissionGetsItsVerdict) {
     EXPECT_NE(rest("broken").find("rings.frag:7:12: error: syntax error"), std::string::npos) << rest("broken");
     EXPECT_EQ(verdict("slow"), "0,error,,");
     EXPECT_EQ(rest("slow"), "timed out," + (cls / "slow" / "rings.glib").string() + ": error: stopped after 3 s (--timeout 3)");
-    EXPECT_EQ(rest("empty"), "no script," + (cls / "empty").string() + ": error: no .glib script in this submission");
+    EXPECT_EQ(rest("empty"), "no script," + (cls / "empty").string() +
+                                 ": error: no .glib script in this submission; it holds notes.txt");
     EXPECT_EQ(rest("twice"), "more than one script,\"" + (cls / "twice").string() +
                                  ": error: 2 .glib scripts (old.glib, rings.glib); keep one\"");  // quoted: a comma
     EXPECT_EQ(rest("evil"), "the zip was refused," + (cls / "evil.zip").string() +

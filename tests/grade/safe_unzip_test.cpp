@@ -56,6 +56,19 @@ TEST(SafeUnzip, APlainZipUnpacksWithItsFolders) {
     EXPECT_TRUE(fs::is_regular_file(t.path / "out/hw/s.frag"));
 }
 
+// A zip from an older Windows tool, its folders written with backslashes:
+// unpacked into those folders, not refused whole (issue 29).
+TEST(SafeUnzip, BackslashesAreFolders) {
+    testing::TestFolder t("unzip");
+    auto zip = makeZip(t.path / "bob.zip", {{"hw\\bloom.glib", "Ortho -1 1 -1 1\n"}, {"hw\\shaders\\s.frag", "x"}});
+    std::string error;
+    ASSERT_TRUE(safeUnzip(zip, (t.path / "out").string(), {}, error)) << error;
+    EXPECT_TRUE(fs::is_regular_file(t.path / "out/hw/bloom.glib"));
+    EXPECT_TRUE(fs::is_regular_file(t.path / "out/hw/shaders/s.frag"));
+    EXPECT_EQ(unzipError(makeZip(t.path / "evil.zip", {{"..\\evil.glib", "x"}}), t.path / "evil"),
+              (t.path / "evil.zip").string() + ": error: entry '../evil.glib' leaves its folder (..); nothing unpacked");
+}
+
 TEST(SafeUnzip, APathLeavingItsFolderIsRefused) {
     testing::TestFolder t("unzip");
     auto zip = makeZip(t.path / "bob.zip", {{"ok.glib", "x"}, {"hw/../../x", "evil"}});
@@ -139,7 +152,12 @@ TEST(SafeUnzip, NamesAreCheckedAlone) {
     EXPECT_EQ(unsafeEntryName("a/b.glib"), "");
     EXPECT_EQ(unsafeEntryName("a..b/c"), "");  // '..' only as a whole component
     EXPECT_EQ(unsafeEntryName(".."), "leaves its folder (..)");
-    EXPECT_EQ(unsafeEntryName("a\\..\\b"), "has a backslash in its name (a Windows path)");
+    // Backslashes are the folders older Windows tools meant (issue 29), and
+    // are checked as such: a '..' or an absolute path is refused as with '/'.
+    EXPECT_EQ(entryPath("week3\\shaders\\bloom.frag"), "week3/shaders/bloom.frag");
+    EXPECT_EQ(unsafeEntryName(entryPath("a\\..\\b")), "leaves its folder (..)");
+    EXPECT_EQ(unsafeEntryName(entryPath("..\\x")), "leaves its folder (..)");
+    EXPECT_EQ(unsafeEntryName(entryPath("\\etc\\passwd")), "is an absolute path");
     EXPECT_EQ(unsafeEntryName("C:/x"), "is an absolute path (a drive letter)");
 }
 

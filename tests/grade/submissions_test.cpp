@@ -63,17 +63,22 @@ TEST(Submissions, NoScriptOrTwoScriptsAreNamed) {
     touch(t.path / "eve/.trash/c.glib");
     std::string error;
     EXPECT_EQ(findScript((t.path / "bob").string(), error), "");
-    EXPECT_EQ(error, (t.path / "bob").string() + ": error: no .glib script in this submission");
+    // What was there instead is named (issue 29).
+    EXPECT_EQ(error, (t.path / "bob").string() + ": error: no .glib script in this submission; it holds readme.txt");
     EXPECT_EQ(findScript((t.path / "eve").string(), error), "");
     EXPECT_EQ(error, (t.path / "eve").string() + ": error: 2 .glib scripts (a.glib, old/b.glib); keep one");
 }
 
-TEST(Submissions, ScriptsDeeperThanThreeFoldersAreNotSearched) {
+// A script three folders down (a course folder in a zip's folder) is found
+// (issue 29: it was "no .glib script"); past eight levels nothing is searched.
+TEST(Submissions, ScriptsAreFoundUpToEightFoldersDown) {
     testing::TestFolder t("subs");
-    touch(t.path / "f/a/b/c/deep.glib");
-    touch(t.path / "f/a/b/ok.glib");
+    touch(t.path / "f/week3/hw/bloom/ok.glib");
+    touch(t.path / "f/1/2/3/4/5/6/7/8/too_deep.glib");
     std::string error;
-    EXPECT_EQ(findScript((t.path / "f").string(), error), (t.path / "f/a/b/ok.glib").string()) << error;
+    EXPECT_EQ(findScript((t.path / "f").string(), error), (t.path / "f/week3/hw/bloom/ok.glib").string()) << error;
+    touch(t.path / "g/1/2/3/4/5/6/7/seven.glib");
+    EXPECT_EQ(findScript((t.path / "g").string(), error), (t.path / "g/1/2/3/4/5/6/7/seven.glib").string()) << error;
 }
 
 }  // namespace

@@ -107,7 +107,10 @@ TEST(Lexer, BackslashBeforeACommentContinues) {
 TEST(Lexer, ByteOrderMarkBeforeTheFirstLine) {
     auto p = parse("\xEF\xBB\xBFSphere 2\n");
     ASSERT_EQ(dump(p.script), (Strings{"Sphere@1:4 2"}));
-    EXPECT_TRUE(p.diags.all().empty());
+    // Read as nothing, and said in a note (issue 29), not a warning.
+    ASSERT_EQ(p.diags.all().size(), 1u);
+    EXPECT_EQ(p.diags.all()[0].severity, Severity::Note);
+    EXPECT_EQ(p.diags.all()[0].loc.line, 1);
 }
 
 TEST(Lexer, LogicalLinesSkipBlankAndCommentOnlyLines) {
