@@ -206,6 +206,14 @@ MUTANTS = [
       "text->replace(0, 3, \"   \");",
       "text->replace(0, 0, \"\");",
       {"test_cli": "CliMessyWork.*"}, "a byte-order mark before #version reaches the compiler (issue 29)"),
+    M("names.keep-utf8", "src/driver/batch.cpp",
+      "if (size_t n = utf8Letter(base, k)) {",
+      "if (size_t n = 0 * utf8Letter(base, k)) {",
+      {"test_cli": "CliGrade.Names*"}, "a student's letters beyond ASCII become '_' again (issue 29)"),
+    M("names.twice-said", "src/app/grade_batch.cpp",
+      "if (subs[i].name == subs[i - 1].name && (i < 2 || subs[i - 2].name != subs[i].name)) {",
+      "if (false) {",
+      {"test_cli": "CliGrade.Names*"}, "a student who handed in twice is graded twice without a word (issue 29)"),
 
     # ---- src/driver ----
     M("cascade.first-is-a-driver-error", "src/driver/error_cascades.cpp",

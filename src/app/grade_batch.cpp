@@ -14,6 +14,7 @@
 
 #include <fmt/format.h>
 
+#include "lang/diagnostics.h"
 #include "app/grade_batch.h"
 #include "driver/batch.h"
 #include "driver/console.h"
@@ -74,6 +75,17 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         std::error_code ec;
         std::erase_if(subs, [&](const Submission& sub) { return fs::equivalent(sub.path, o.outputDir, ec); });
     }
+    // A student who handed in twice (a folder and a zip of it): both are
+    // graded, and said, never silently as NAME-2 (issue 29).
+    for (size_t i = 1; i < subs.size(); ++i)
+        if (subs[i].name == subs[i - 1].name && (i < 2 || subs[i - 2].name != subs[i].name)) {
+            std::string paths;
+            for (size_t k = i - 1; k < subs.size() && subs[k].name == subs[i].name; ++k)
+                paths += (paths.empty() ? "" : ", ") + subs[k].path;
+            std::cerr << fmt::format("glimmer: warning: {} handed in more than once ({}); each is graded, as a row "
+                                     "of its own\n", sanitizeForTerminal(subs[i].name, false),
+                                     sanitizeForTerminal(paths, false));
+        }
     if (subs.empty()) {
         std::cerr << "glimmer: error: batch: no submissions to grade\n";
         return kExitUsage;

@@ -307,6 +307,22 @@ bool inShard(size_t index, int shard, int shards) {
     return shards >= 1 && shard >= 1 && shard <= shards && int(index % size_t(shards)) == shard - 1;
 }
 
+namespace {
+
+// The length of the UTF-8 character beyond ASCII at `k` of `s`, when it is a
+// whole one and not a C1 control; 0 otherwise.
+size_t utf8Letter(const std::string& s, size_t k) {
+    const unsigned char c = static_cast<unsigned char>(s[k]);
+    const size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    if (n == 0 || k + n > s.size()) return 0;
+    for (size_t i = 1; i < n; ++i)
+        if ((static_cast<unsigned char>(s[k + i]) & 0xC0) != 0x80) return 0;
+    if (c == 0xC2 && static_cast<unsigned char>(s[k + 1]) <= 0x9F) return 0;  // C1
+    return n;
+}
+
+}  // namespace
+
 std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts) {
     std::vector<std::string> out;
     std::set<std::string> used;
@@ -315,10 +331,20 @@ std::vector<std::string> batchOutputNames(const std::vector<std::string>& script
         if (base.size() > 5 && base.compare(base.size() - 5, 5, ".glib") == 0) base.resize(base.size() - 5);
         while (base.rfind("./", 0) == 0) base.erase(0, 2);
         std::string name;
-        for (char c : base) {
+        for (size_t k = 0; k < base.size();) {
+            const unsigned char c = static_cast<unsigned char>(base[k]);
             bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
                          c == '_' || c == '.';
-            name += plain ? c : '_';
+            // A name keeps its letters as written in UTF-8 (Jürgen, 李雷: issue 29,
+            // they were J__rgen and 'script'); a byte that is not part of a
+            // whole UTF-8 character, or a C1 control (U+0080..U+009F), is '_'.
+            if (size_t n = utf8Letter(base, k)) {
+                name.append(base, k, n);
+                k += n;
+                continue;
+            }
+            name += plain ? char(c) : '_';
+            ++k;
         }
         while (!name.empty() && (name.front() == '_' || name.front() == '.')) name.erase(0, 1);
         if (name.empty()) name = "script";

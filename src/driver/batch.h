@@ -69,7 +69,8 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
 bool inShard(size_t index, int shard, int shards);
 
 // One PNG name per script, derived from its path ("class/alice/bloom.glib"
-// -> "class_alice_bloom.png"), made unique with "-2", "-3", ... in list order.
+// -> "class_alice_bloom.png"; letters beyond ASCII kept as written in UTF-8),
+// made unique with "-2", "-3", ... in list order.
 std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts);
 
 }  // namespace glimmer

@@ -387,6 +387,31 @@ TEST(CliGrade, ShardsMergeIntoTheOneReportOfALocalRun) {
                          "glimmer: error: batch-merge: eli: graded by 2 shards\n");
 }
 
+// Real names (issue 29): Jürgen and Jörgen stay two students with their
+// letters (they were both J__rgen_Gro__, one silently -2), 李雷 is not
+// 'script', and a folder and a zip of one student are both graded and said.
+TEST(CliGrade, NamesKeepTheirLettersAndATwiceHandedInStudentIsSaid) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class", out = dir.path() / "out";
+    const std::string frag = readAll(kSolution / "rings.frag");
+    for (const char* name : {"J\xc3\xbcrgen Gro\xc3\x9f", "J\xc3\xb6rgen Gro\xc3\x9f", "\xe6\x9d\x8e\xe9\x9b\xb7", "ann"})
+        student(cls / name, frag);
+    zipFolder(cls / "ann.zip", {{"st.vert", readAll(kSolution / "st.vert")}, {"rings.frag", frag},
+                                {"rings.glib", readAll(kSolution / "rings.glib")}});
+    auto r = runGlimmer(gradeArgs(cls, out), 120);
+    ASSERT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("glimmer: warning: ann handed in more than once (" + (cls / "ann").string() + ", " +
+                         (cls / "ann.zip").string() + "); each is graded, as a row of its own\n"),
+              std::string::npos) << r.err;
+    auto rows = csvRows(out / "grades.csv");
+    std::vector<std::string> students;
+    for (const auto& [who, row] : rows) students.push_back(who);
+    EXPECT_EQ(students, (std::vector<std::string>{"J\xc3\xb6rgen_Gro\xc3\x9f", "J\xc3\xbcrgen_Gro\xc3\x9f", "ann",
+                                                  "ann-2", "\xe6\x9d\x8e\xe9\x9b\xb7"}));
+    for (const auto& [who, row] : rows) EXPECT_EQ(row.substr(0, 9), "100,pass,") << who;
+}
+
 TEST(CliGrade, FoldersAreGradedOnlyAgainstASolution) {
     TempDir dir;
     student(dir.path() / "class" / "ann", readAll(kSolution / "rings.frag"));
