@@ -397,6 +397,22 @@ state="$(lesson_state "file://$pictures/injected.html")"
 [[ "$state" == "ready=1 pwned=0 refused=0 png=1 | lit_es.glib: drawn" ]]
 tally $? "an inline script without its hash ran in the packed page: $state"
 
+# The packer takes only the lesson's own files (issue 30): a hard link (the
+# same file as one outside the folder) and a symbolic link are skipped, said
+# on stderr, and their content is nowhere in the lesson it writes.
+mkdir -p "$pictures/linked"
+echo "secret-outside-$$" > "$pictures/outside.txt"
+cp tests/data/web/lit_es.* "$pictures/linked/"
+ln "$pictures/outside.txt" "$pictures/linked/hard.txt"
+ln -s "$pictures/outside.txt" "$pictures/linked/soft.txt"
+said="$(python3 tools/web_lesson.py pack "$pictures/linked" "$web/src/web" --static "$pictures/linked-site" 2>&1 >/dev/null)"
+grep -q "skipped .*hard.txt: a hard link" <<<"$said" && grep -q "skipped .*soft.txt: a symbolic link" <<<"$said" &&
+  python3 -c 'import base64, json, sys
+files = json.load(open(sys.argv[1]))["files"]
+sys.exit(0 if "lit_es.glib" in files and not any(b"secret-outside" in base64.b64decode(v) for v in files.values()) else 1)' \
+  "$pictures/linked-site/lesson.json"
+tally $? "the packer took a hard or symbolic link into the lesson: $said"
+
 # Stand-ins in the page's live view, as in `glimmer view` (issue 25): a
 # script whose image was not handed in opens, drawn, with the warning that
 # says a stand-in took its place (7 of 10 such classroom scripts failed).
