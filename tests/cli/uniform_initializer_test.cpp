@@ -29,6 +29,12 @@ TEST(CliUniformInitializers, TheDesktopKeepsThemAndDoesNotCallThemUnset) {
 }
 
 TEST(CliUniformInitializers, TheWebGlRouteSetsThemAsTheDesktopDriverDoes) {
+#if defined(__SANITIZE_ADDRESS__)
+    // tools/sanitize-ci.sh: Mesa's EGL dlcloses its driver, and the leak report
+    // that follows cannot be suppressed in a child glimmer; the ES route runs
+    // under the sanitizers in test_render (WebTranslateOnEs), driver preloaded.
+    GTEST_SKIP() << "EGL in a sanitized child";
+#endif
     TempDir dir;
     auto desk = runGlimmer({"-q", "render", kScript, "--size", "16x16", "--backend", "osmesa", "-o", dir.file("d.png")});
     auto es = runGlimmer({"-q", "render", kScript, "--size", "16x16", "--backend", "egl-gles", "-o", dir.file("e.png")});
