@@ -25,7 +25,8 @@ public:
         // without `\` still belong to; reset by any line that is not one.
         std::optional<size_t> attachTo;
 
-        LexBudget budget{maxBytes_};
+        LexBudget budget;
+        budget.maxBytes = maxBytes_;
         std::vector<LogicalLine> lines = lexScript(text, &budget);
         script.bytes = budget.used;
         if (budget.over()) {
