@@ -214,6 +214,10 @@ MUTANTS = [
       "if (subs[i].name == subs[i - 1].name && (i < 2 || subs[i - 2].name != subs[i].name)) {",
       "if (false) {",
       {"test_cli": "CliGrade.Names*"}, "a student who handed in twice is graded twice without a word (issue 29)"),
+    M("csv.tab-first", "src/grade/grade_report.cpp",
+      "if (text[0] == '\\t' || text[0] == '\\r') return true;",
+      "if (text[0] == '\\r') return true;",
+      GRADE, "a cell starting with a tab before a formula is no longer guarded (issue 29)"),
 
     # ---- src/driver ----
     M("cascade.first-is-a-driver-error", "src/driver/error_cascades.cpp",

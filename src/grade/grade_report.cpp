@@ -17,8 +17,17 @@ int rank(const std::string& verdict) {
 
 std::string dB(double v) { return std::isinf(v) ? "identical" : fmt::format("{:.1f} dB", v); }
 
+// A cell a spreadsheet would run as a formula starts with '=', '+', '-' or
+// '@', or with a tab or a carriage return before one (OWASP's CSV injection
+// list; issue 29): it gets a "'" first, which makes it text.
+bool startsLikeAFormula(const std::string& text) {
+    if (text.empty()) return false;
+    if (text[0] == '\t' || text[0] == '\r') return true;
+    return (text[0] == '=' || text[0] == '+' || text[0] == '-' || text[0] == '@');
+}
+
 std::string csvCell(std::string text) {
-    if (!text.empty() && (text[0] == '=' || text[0] == '+' || text[0] == '-' || text[0] == '@')) text = "'" + text;
+    if (startsLikeAFormula(text)) text = "'" + text;
     if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
     std::string out = "\"";
     for (char c : text) out += c == '"' ? std::string("\"\"") : std::string(1, c);

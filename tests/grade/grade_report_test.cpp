@@ -62,6 +62,16 @@ TEST(GradeReport, CsvGuardsEveryFormulaStartAndQuotesLineBreaks) {
               "\"x\ry\",6,wrong,0.0000,0.00,0.00,,\n");
 }
 
+// Issue 29: a tab or a carriage return before the formula still makes a
+// formula in some spreadsheets: guarded too (and the CR cell quoted).
+TEST(GradeReport, CsvGuardsATabOrCarriageReturnFirst) {
+    GradeRow tab = row("\t=1+1", "wrong", 1), cr = row("\r=1+1", "wrong", 2);
+    EXPECT_EQ(gradesCsv({tab, cr}),
+              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic\n"
+              "'\t=1+1,1,wrong,0.0000,0.00,0.00,,\n"
+              "\"'\r=1+1\",2,wrong,0.0000,0.00,0.00,,\n");
+}
+
 // Issue 26: a student's name goes into attributes (the row's id, the glance
 // strip's link): a '"' in it must not end the attribute.
 TEST(GradeReport, AQuoteInANameCannotLeaveItsAttribute) {
