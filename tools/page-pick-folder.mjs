@@ -20,6 +20,9 @@ if (!out) {
 }
 const page = await openPage(url);
 await page.navigate();
+// The page opens drawing the seed bloom (issue 27): what it said then is not
+// the answer to the folder.
+const before = await page.evaluate(`document.getElementById("verdict").textContent`);
 if (drop) {
   // Dragged from a file manager and let go over the page.
   const data = { items: [], files: [folder], dragOperationsMask: 1 };
@@ -34,12 +37,13 @@ if (drop) {
   if (set.error) { console.error("cannot pick the folder: " + set.error.message); page.close(1); }
 }
 // The page answers a picked folder by drawing (or refusing) it: wait for
-// the verdict to change from the page's start.
+// the verdict to change from what it said before.
 let result;
 for (let i = 0; i < 600 && !result; ++i) {
   result = await page.evaluate(`(() => {
     const v = document.getElementById("verdict");
-    if (!v.dataset.exit || !/^(yours|refused|[^:]*\\.glib:)/.test(v.textContent)) return null;
+    if (!v.dataset.exit || v.textContent === ${JSON.stringify(before)} ||
+        !/^(yours|refused|[^:]*\\.glib:)/.test(v.textContent)) return null;
     return { exit: Number(v.dataset.exit), verdict: v.textContent,
              diagnostics: document.getElementById("diagnostics").textContent,
              png: document.getElementById("picture").dataset.png || "" };

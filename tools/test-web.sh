@@ -413,6 +413,19 @@ sys.exit(0 if "lit_es.glib" in files and not any(b"secret-outside" in base64.b64
   "$pictures/linked-site/lesson.json"
 tally $? "the packer took a hard or symbolic link into the lesson: $said"
 
+# Opened with nothing asked, the page draws the seed bloom (it was blank
+# until Draw), and its list holds the lesson's scripts, not the project's
+# test scripts (issue 27).
+opened="$(page_dom "file://$page" --allow-file-access-from-files | python3 -c '
+import re, sys
+dom = sys.stdin.read()
+verdict = re.search(r"<[^>]*id=\"verdict\"[^>]*>([^<]*)<", dom)
+options = re.findall(r"<option value=\"([^\"]*)\"", dom)
+print(verdict.group(1) if verdict else "no verdict", "|", len(options), "scripts,",
+      sum(o.startswith("/lesson:tests/") for o in options), "test scripts")')"
+[[ "$opened" == "scripts/bloom.glib: drawn | "*" scripts, 0 test scripts" ]]
+tally $? "the page opened with nothing asked did not draw the seed, or lists test scripts: $opened"
+
 # Stand-ins in the page's live view, as in `glimmer view` (issue 25): a
 # script whose image was not handed in opens, drawn, with the warning that
 # says a stand-in took its place (7 of 10 such classroom scripts failed).

@@ -149,11 +149,16 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
     walk(root);
     return found.sort();
   };
-  // The select's values are "ROOT:PATH"; the user's scripts come first.
+  // The select's values are "ROOT:PATH"; the user's scripts come first. A
+  // lesson (packed or linked) lists its own scripts only, each once; the
+  // bundled lesson leaves out the project's test scripts (tests/...), which
+  // a student would click and find broken on purpose (issue 27).
   const listScripts = () => {
     select.length = 0;
-    for (const root of ["/user", "/lesson"])
-      for (const s of scriptsUnder(root)) select.add(new Option((root === "/user" ? "yours: " : "") + s, root + ":" + s));
+    for (const root of lesson ? ["/user"] : ["/user", "/lesson"])
+      for (const s of scriptsUnder(root))
+        if (root === "/user" || !s.startsWith("tests/"))
+          select.add(new Option((root === "/user" ? "yours: " : "") + s, root + ":" + s));
   };
 
   // Replaces /user with `files`: [relativePath, Uint8Array] pairs. A path
@@ -480,9 +485,13 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
     document.body.dataset.ready = "1";
     return;
   }
-  // A lesson opened with no script named draws its first script.
-  if (lesson && !query.get("check") && !query.get("render") && !query.get("view") && select.length)
+  // Opened with no script named, the page draws one: a lesson's first
+  // script, or the bundled seed bloom (issue 27: it was blank until Draw).
+  if (!query.get("check") && !query.get("render") && !query.get("view") && select.length) {
+    const seed = [...select.options].find((o) => o.value === "/lesson:scripts/bloom.glib");
+    if (!lesson && seed) select.value = seed.value;
     runView(select.value, 512, 512, "");
+  }
   if (query.get("check")) runCheck(query.get("check"));
   if (query.get("render")) {
     const [w, h] = (query.get("size") || "512x512").split("x").map(Number);
