@@ -218,6 +218,14 @@ MUTANTS = [
       "if (text[0] == '\\t' || text[0] == '\\r') return true;",
       "if (text[0] == '\\r') return true;",
       GRADE, "a cell starting with a tab before a formula is no longer guarded (issue 29)"),
+    M("report.error-label", "src/grade/grade_report.cpp",
+      "const std::string label = r.verdict == \"error\" && !r.notes.empty() ? \"error: \" + r.notes : r.verdict;",
+      "const std::string label = r.verdict;",
+      GRADE, "every error row says only 'error' again (issue 29)"),
+    M("batch.timeout-ms", "src/driver/batch.cpp",
+      "s.timeoutSeconds, s.timeoutSeconds), ms);",
+      "s.timeoutSeconds, s.timeoutSeconds), 0);",
+      {"test_cli": "CliGrade.EachKind*"}, "a timed-out submission's time is 0.00 s again (issue 29)"),
 
     # ---- src/driver ----
     M("cascade.first-is-a-driver-error", "src/driver/error_cascades.cpp",

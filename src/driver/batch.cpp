@@ -364,12 +364,15 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
     size_t next = 0, finished = 0;
     ::signal(SIGPIPE, SIG_IGN);  // a worker that died mid-job must not take the parent with it
     std::vector<Worker> workers(size_t(std::max(1, std::min<int>(s.jobs, int(jobs.size())))));
-    auto fail = [&](long job, const std::string& why) {
+    // `ms`: how long the job ran before it was stopped (a time-out is not
+    // "0.00 s" in a report: issue 29).
+    auto fail = [&](long job, const std::string& why, double ms = 0) {
         const BatchJob& j = jobs[size_t(job)];
         BatchResult& r = results[size_t(job)];
         r.exitCode = 1;
         r.json = resultJson(j, 1, why, "", 0, 0, 0, "unchecked");
         r.diagnostics = why;
+        r.ms = ms;
         done[size_t(job)] = true;
         ++finished;
         if (onResult) onResult(size_t(job), r);
@@ -422,9 +425,11 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
                     else retire(w, false);
                 } else {
                     long job = w.job;
+                    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - w.started).count();
                     retire(w, true);
                     if (job >= 0 && !done[size_t(job)])
-                        fail(job, jobs[size_t(job)].script + ": error: the renderer crashed while drawing this script\n");
+                        fail(job, jobs[size_t(job)].script + ": error: the renderer crashed while drawing this script\n",
+                             ms);
                     if (next < jobs.size()) assign(w);
                 }
                 continue;
@@ -432,9 +437,10 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
             if (w.job >= 0 && s.timeoutSeconds > 0 &&
                 std::chrono::duration<double>(Clock::now() - w.started).count() > s.timeoutSeconds) {
                 long job = w.job;
+                const double ms = std::chrono::duration<double, std::milli>(Clock::now() - w.started).count();
                 retire(w, true);
                 fail(job, fmt::format("{}: error: stopped after {:g} s (--timeout {:g})\n", jobs[size_t(job)].script,
-                                      s.timeoutSeconds, s.timeoutSeconds));
+                                      s.timeoutSeconds, s.timeoutSeconds), ms);
                 if (next < jobs.size()) assign(w);
             }
         }

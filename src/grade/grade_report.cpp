@@ -72,14 +72,17 @@ std::string reportRowHtml(const GradeRow& r, const RowPictures& p) {
                                : fmt::format("SSIM {:.3f} · PSNR {}<br>worst at {}{}", r.ssim, htmlEscape(dB(r.psnr)),
                                              htmlEscape(r.worstSetting),
                                              r.bySetting.empty() ? "" : "<br>SSIM by setting: " + htmlEscape(r.bySetting));
+    // An error says which (issue 29: one red ERROR stood for a refused zip, an
+    // unreadable one, a time-out and a shader that does not compile alike).
+    const std::string label = r.verdict == "error" && !r.notes.empty() ? "error: " + r.notes : r.verdict;
     return fmt::format(
-        "<tr class=\"{0}\" id=\"s-{1}\"><td class=who><b>{1}</b><br><span class=v>{0}</span> <span class=score>{2}</span><br>"
+        "<tr class=\"{0}\" id=\"s-{1}\"><td class=who><b>{1}</b><br><span class=v>{10}</span> <span class=score>{2}</span><br>"
         "<small>{3:.2f} s</small></td>\n<td class=pics>{4}{5}{6}</td>\n<td class=why><small>{7}</small>"
         "{8}{9}</td></tr>\n",
         htmlEscape(r.verdict), htmlEscape(r.student), r.score, r.seconds, img(p.student, "student"),
         img(p.solution, "solution"), img(p.difference, "difference x4"), measures,
         r.notes.empty() ? "" : "<p>" + htmlEscape(r.notes) + "</p>",
-        r.diagnostics.empty() ? "" : "<pre>" + htmlEscape(r.diagnostics) + "</pre>");
+        r.diagnostics.empty() ? "" : "<pre>" + htmlEscape(r.diagnostics) + "</pre>", htmlEscape(label));
 }
 
 std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows, const std::vector<std::string>& rowHtml) {

@@ -140,6 +140,17 @@ TEST(CliGrade, EachKindOfSubmissionGetsItsVerdict) {
     EXPECT_NE(rest("broken").find("rings.frag:7:12: error: syntax error"), std::string::npos) << rest("broken");
     EXPECT_EQ(verdict("slow"), "0,error,,");
     EXPECT_EQ(rest("slow"), "timed out," + (cls / "slow" / "rings.glib").string() + ": error: stopped after 3 s (--timeout 3)");
+    {  // the time it ran before it was stopped, not 0.00 s (issue 29)
+        std::istringstream csv(readAll(out / "grades.csv"));
+        std::string line;
+        while (std::getline(csv, line) && line.rfind("slow,", 0) != 0) {}
+        std::vector<std::string> cells;
+        for (size_t at = 0, comma; cells.size() < 6; at = comma + 1) {
+            comma = line.find(',', at);
+            cells.push_back(line.substr(at, comma - at));
+        }
+        EXPECT_GE(std::stod(cells[5]), 3.0) << line;
+    }
     EXPECT_EQ(rest("empty"), "no script," + (cls / "empty").string() +
                                  ": error: no .glib script in this submission; it holds notes.txt");
     EXPECT_EQ(rest("twice"), "more than one script,\"" + (cls / "twice").string() +

@@ -142,6 +142,17 @@ TEST(GradeReport, RecordsReadBackExactly) {
     EXPECT_EQ(error, "verdict 'maybe' is not pass, look, wrong or error");
 }
 
+// Issue 29: an error row says which error, not one ERROR for all.
+TEST(GradeReport, AnErrorRowSaysWhichError) {
+    GradeRow timedOut = row("ann", "error", 0), refused = row("bob", "error", 0), plain = row("cy", "error", 0);
+    timedOut.notes = "timed out";
+    refused.notes = "the zip was refused";
+    EXPECT_NE(reportRowHtml(timedOut, {}).find("<span class=v>error: timed out</span>"), std::string::npos);
+    EXPECT_NE(reportRowHtml(refused, {}).find("<span class=v>error: the zip was refused</span>"), std::string::npos);
+    EXPECT_NE(reportRowHtml(plain, {}).find("<span class=v>error</span>"), std::string::npos);
+    EXPECT_NE(reportRowHtml(row("di", "pass", 100), {}).find("<span class=v>pass</span>"), std::string::npos);
+}
+
 TEST(GradeReport, TheHtmlEscapesWhatStudentsWrote) {
     GradeRow r = row("<script>alert(1)</script>", "error", 0);
     r.diagnostics = "a.glib:1:1: error: '<' is never closed\n";
