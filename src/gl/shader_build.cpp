@@ -118,6 +118,9 @@ Diagnostic judgeUninitialized(Diagnostic d, const std::string& text) {
 const char* const kConstInitializer = "initializer of const variable `";
 const char* const kLocalConstExtension = "#extension GL_ARB_shading_language_420pack : enable\n";
 
+// Mesa's "initializer of const variable `k2' must be a constant expression".
+bool isConstInitializerError(const Diagnostic& d) { return d.message.rfind(kConstInitializer, 0) == 0; }
+
 // "`k2'" from Mesa's "initializer of const variable `k2' must be ...".
 std::string constName(const std::string& message) {
     size_t open = message.find('`'), close = message.find('\'', open + 1);
@@ -137,8 +140,8 @@ int profilelessVersionLine(const std::string& text, int& version) {
 
 // `text` with " compatibility" after the number of its `#version` on `line`.
 std::string withCompatibilityProfile(const std::string& text, int line) {
-    size_t at = 0;
-    for (int n = 1; n < line && at != std::string::npos; ++n) at = text.find('\n', at) + 1;
+    const size_t at = lineStartOf(text, line);
+    if (at == std::string::npos) return text;
     size_t end = text.find_first_of("\r\n", at);
     std::string directive = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
     size_t number = directive.find_first_of("0123456789");
@@ -157,11 +160,7 @@ std::string localConstAccepted(const std::string& message) {
 // `text` with the last whole word 'const' before `loc` on its line blanked
 // out (columns keep their places); unchanged when there is none.
 std::string withoutConstBefore(std::string text, SourceLoc loc) {
-    size_t start = 0;
-    for (int n = 1; n < loc.line && start != std::string::npos; ++n) {
-        start = text.find('\n', start);
-        if (start != std::string::npos) ++start;
-    }
+    const size_t start = lineStartOf(text, loc.line);
     if (start == std::string::npos) return text;
     size_t end = std::min(text.find('\n', start), start + size_t(std::max(loc.col - 1, 0)));
     if (end == std::string::npos) end = text.size();
@@ -327,7 +326,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
             SourceLoc at;
             std::string what;
             for (const auto& d : c.said.all())
-                if (what.empty() && d.message.rfind(kConstInitializer, 0) == 0) at = d.loc, what = d.message;
+                if (what.empty() && isConstInitializerError(d)) at = d.loc, what = d.message;
             if (!what.empty()) {
                 Compiled again = compileStage(gl, stage, text, prelude + kLocalConstExtension, scriptFile);
                 if (again.status) {
@@ -344,7 +343,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                     gl.DeleteShader(again.shader);
                     std::vector<Diagnostic> globals;
                     for (const auto& d : again.said.all())
-                        if (d.message.rfind(kConstInitializer, 0) == 0) globals.push_back(d);
+                        if (isConstInitializerError(d)) globals.push_back(d);
                     std::string relaxed = text;
                     for (const auto& d : globals) relaxed = withoutConstBefore(relaxed, d.loc);
                     Compiled third = globals.empty() ? Compiled{}
@@ -354,7 +353,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                         gl.DeleteShader(c.shader);
                         // A local one beside them was accepted by the extension: said as above.
                         for (const auto& d : c.said.all())
-                            if (d.message.rfind(kConstInitializer, 0) == 0 &&
+                            if (isConstInitializerError(d) &&
                                 std::none_of(globals.begin(), globals.end(),
                                              [&](const Diagnostic& g) { return g.loc.line == d.loc.line; })) {
                                 diags.warning(stage.path, d.loc, localConstAccepted(d.message));

@@ -71,6 +71,38 @@ GlslVersion glslVersionOf(std::string_view s) {
     return v;
 }
 
+std::vector<std::string_view> glslWords(std::string_view text) {
+    std::vector<std::string_view> out;
+    for (size_t i = 0; i < text.size();) {
+        if (!isGlslWordChar(text[i])) {
+            ++i;
+            continue;
+        }
+        size_t j = i;
+        while (j < text.size() && isGlslWordChar(text[j])) ++j;
+        out.push_back(text.substr(i, j - i));
+        i = j;
+    }
+    return out;
+}
+
+size_t lineStartOf(std::string_view text, int line) {
+    size_t at = 0;
+    for (int n = 1; n < line; ++n) {
+        at = text.find('\n', at);
+        if (at == std::string_view::npos) return at;
+        ++at;
+    }
+    return at;
+}
+
+std::string_view lineOf(std::string_view text, int line) {
+    const size_t at = lineStartOf(text, line);
+    if (at == std::string_view::npos || at > text.size()) return {};
+    const size_t end = text.find('\n', at);
+    return text.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
+}
+
 std::string firstWordWithPrefix(std::string_view text, std::string_view prefix) {
     if (prefix.empty()) return {};
     for (size_t at = text.find(prefix); at != std::string_view::npos; at = text.find(prefix, at + 1)) {

@@ -12,6 +12,7 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace glimmer {
 
@@ -40,6 +41,14 @@ struct GlslVersion {
     bool wellFormed = true;
 };
 GlslVersion glslVersionOf(std::string_view source);
+
+// The words of `text` (runs of word characters), in order, as views into it.
+std::vector<std::string_view> glslWords(std::string_view text);
+
+// Where line `line` (1-based) of `text` starts; npos when the text has fewer
+// lines. lineOf: that line without its '\n' ("" when there is none).
+size_t lineStartOf(std::string_view text, int line);
+std::string_view lineOf(std::string_view text, int line);
 
 // The first whole word of `text` that starts with `prefix` ("gl_" finds
 // "gl_Vertex" in "'gl_Vertex' : undeclared identifier"); "" when none.

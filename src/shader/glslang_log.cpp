@@ -8,17 +8,6 @@
 namespace glimmer {
 namespace {
 
-std::string_view lineOf(std::string_view text, int line) {
-    size_t at = 0;
-    for (int n = 1; n < line; ++n) {
-        at = text.find('\n', at);
-        if (at == std::string_view::npos) return {};
-        ++at;
-    }
-    size_t end = text.find('\n', at);
-    return text.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at);
-}
-
 std::string_view trim(std::string_view s) {
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.remove_prefix(1);
     while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.remove_suffix(1);

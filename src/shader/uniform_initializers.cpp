@@ -146,17 +146,7 @@ UniformInitializers takeUniformInitializers(std::string_view source) {
             const bool array = left.find('[') != std::string_view::npos;
             // The words before '=' (and an array's size): [precision] TYPE NAME, or NAME after a comma.
             left = left.substr(0, left.find('['));
-            std::vector<std::string_view> words;
-            for (size_t w = 0; w < left.size();) {
-                if (!isGlslWordChar(left[w])) {
-                    ++w;
-                    continue;
-                }
-                size_t e = w;
-                while (e < left.size() && isGlslWordChar(left[e])) ++e;
-                words.push_back(left.substr(w, e - w));
-                w = e;
-            }
+            const std::vector<std::string_view> words = glslWords(left);
             if (type.empty() && words.size() >= 2) type = std::string(words[words.size() - 2]);
             if (eq != std::string_view::npos && !words.empty()) {
                 UniformInitializer u;

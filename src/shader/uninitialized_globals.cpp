@@ -26,19 +26,10 @@ std::string codeOnly(const std::string& t) {
     return s;
 }
 
+// glslWords, as strings (the callers look them up in sets of strings).
 std::vector<std::string> words(const std::string& s) {
-    std::vector<std::string> out;
-    for (size_t i = 0; i < s.size();) {
-        if (!isGlslWordChar(s[i])) {
-            ++i;
-            continue;
-        }
-        size_t j = i;
-        while (j < s.size() && isGlslWordChar(s[j])) ++j;
-        out.push_back(s.substr(i, j - i));
-        i = j;
-    }
-    return out;
+    const std::vector<std::string_view> found = glslWords(s);
+    return {found.begin(), found.end()};
 }
 
 bool hasWord(const std::string& s, const std::string& w) {

@@ -58,6 +58,18 @@ TEST(GlslScan, FindsTheFirstWholeWordWithAPrefix) {
     EXPECT_EQ(firstWordWithPrefix("`" + huge + "' undeclared", "gl_"), huge);
 }
 
+TEST(GlslScan, WordsAndLines) {
+    const std::string text = "uniform vec3 uTint;\n\nvoid main() { x_1 = 2.5; }";
+    EXPECT_EQ(glslWords("  a.b_c 4d,"), (std::vector<std::string_view>{"a", "b_c", "4d"}));
+    EXPECT_EQ(lineStartOf(text, 1), 0u);
+    EXPECT_EQ(lineStartOf(text, 3), 21u);
+    EXPECT_EQ(lineStartOf(text, 4), std::string::npos);
+    EXPECT_EQ(lineOf(text, 1), "uniform vec3 uTint;");
+    EXPECT_EQ(lineOf(text, 2), "");
+    EXPECT_EQ(lineOf(text, 3), "void main() { x_1 = 2.5; }");
+    EXPECT_EQ(lineOf(text, 9), "");
+}
+
 TEST(GlslScan, WholeWordsAndWordCharacters) {
     EXPECT_TRUE(isWholeWordAt("uniform float uAdd;", 14, 4));
     EXPECT_FALSE(isWholeWordAt("uniform float uAdder;", 14, 4));
