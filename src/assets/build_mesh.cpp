@@ -37,13 +37,14 @@ bool buildMesh(const MeshDecl& m, Mesh& mesh, std::string& error, std::uint64_t 
             error = "cannot load OBJ '" + m.path + "': it " + why;
             return false;
         }
-        if (std::uint64_t need = used + text.size() + countObj(text).bytes; budget > 0 && need > budget) {
+        const ObjCounts counts = countObj(text);
+        if (std::uint64_t need = used + text.size() + counts.bytes; budget > 0 && need > budget) {
             error = overMemoryBudget(need, budget);
             return false;
         }
-        if (m.shape == CommandKind::Obj) return loadObjText(text, m.path, mesh, error);
+        if (m.shape == CommandKind::Obj) return loadObjText(text, counts, m.path, mesh, error);
         Mesh solid;
-        if (!loadObjText(text, m.path, solid, error)) return false;
+        if (!loadObjText(text, counts, m.path, solid, error)) return false;
         mesh = m.shape == CommandKind::ObjAdj ? makeObjAdjacency(solid) : makeWire(solid);
         return true;
     }

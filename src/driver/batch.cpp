@@ -364,6 +364,7 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
     size_t next = 0, finished = 0;
     ::signal(SIGPIPE, SIG_IGN);  // a worker that died mid-job must not take the parent with it
     std::vector<Worker> workers(size_t(std::max(1, std::min<int>(s.jobs, int(jobs.size())))));
+    auto ranMs = [](const Worker& w) { return std::chrono::duration<double, std::milli>(Clock::now() - w.started).count(); };
     // `ms`: how long the job ran before it was stopped (a time-out is not
     // "0.00 s" in a report: issue 29).
     auto fail = [&](long job, const std::string& why, double ms = 0) {
@@ -425,7 +426,7 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
                     else retire(w, false);
                 } else {
                     long job = w.job;
-                    const double ms = std::chrono::duration<double, std::milli>(Clock::now() - w.started).count();
+                    const double ms = ranMs(w);
                     retire(w, true);
                     if (job >= 0 && !done[size_t(job)])
                         fail(job, jobs[size_t(job)].script + ": error: the renderer crashed while drawing this script\n",
@@ -434,10 +435,8 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
                 }
                 continue;
             }
-            if (w.job >= 0 && s.timeoutSeconds > 0 &&
-                std::chrono::duration<double>(Clock::now() - w.started).count() > s.timeoutSeconds) {
+            if (const double ms = ranMs(w); w.job >= 0 && s.timeoutSeconds > 0 && ms > s.timeoutSeconds * 1000) {
                 long job = w.job;
-                const double ms = std::chrono::duration<double, std::milli>(Clock::now() - w.started).count();
                 retire(w, true);
                 fail(job, fmt::format("{}: error: stopped after {:g} s (--timeout {:g})\n", jobs[size_t(job)].script,
                                       s.timeoutSeconds, s.timeoutSeconds), ms);

@@ -178,9 +178,6 @@ Mesh makeObjAdjacency(const Mesh& triangles);
 // (with tinyobjloader's reason and the path) on failure or when there are no
 // faces; `out` is only written on success.
 bool loadObj(const std::string& path, Mesh& out, std::string& error);
-// The same from the file's text (already read and bounded).
-bool loadObjText(const std::string& text, const std::string& path, Mesh& out, std::string& error);
-
 // What an OBJ asks for, counted in one pass over its text before
 // tinyobjloader sees it (issue 30: a 100 MB file of faces took 4.1 GB, one
 // face of a million corners never finished being cut into triangles).
@@ -193,6 +190,10 @@ struct ObjCounts {
     std::uint64_t bytes = 0;          // an upper estimate of what loading takes (tinyobjloader and the Mesh)
 };
 ObjCounts countObj(const std::string& text);
+// loadObj from the file's text (already read and bounded) and its counts
+// (countObj's, made once by a caller that checked them against a budget).
+bool loadObjText(const std::string& text, const ObjCounts& counts, const std::string& path, Mesh& out,
+                 std::string& error);
 // tinyobjloader cuts a polygon into triangles in time that grows with the
 // square of its corners: each face may have at most kMaxObjFaceCorners, and
 // all faces of five corners or more together at most kMaxObjCuttingWork

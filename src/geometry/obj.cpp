@@ -73,11 +73,11 @@ bool loadObj(const std::string& path, Mesh& out, std::string& error) {
         error = "cannot load OBJ '" + path + "': it " + why;
         return false;
     }
-    return loadObjText(text, path, out, error);
+    return loadObjText(text, countObj(text), path, out, error);
 }
 
-bool loadObjText(const std::string& text, const std::string& path, Mesh& out, std::string& error) {
-    const ObjCounts counts = countObj(text);
+bool loadObjText(const std::string& text, const ObjCounts& counts, const std::string& path, Mesh& out,
+                 std::string& error) {
     if (counts.mostCorners > kMaxObjFaceCorners) {
         error = fmt::format("cannot load OBJ '{}': the face on its line {} has {} corners; Glimmer cuts faces of at "
                             "most {} corners into triangles", path, counts.mostCornersLine, counts.mostCorners,

@@ -32,10 +32,8 @@ std::string quadScript(const TempDir& dir, const std::string& fragText) {
     return writeFile(dir, "s.glib", "Vertex plain.vert\nFragment f.frag\nProgram P\nQuadXY 0 1\n");
 }
 
-RunResult check(const std::string& script, std::vector<std::string> extra = {}) {
-    std::vector<std::string> args{"check", script, "--backend", "osmesa"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    return runGlimmer(args);
+RunResult check(const std::string& script, const std::vector<std::string>& extra = {}) {
+    return checkOnOsmesa(script, extra);
 }
 
 // ---- shader text: no recursion over a student's line (std::regex overflowed the stack)

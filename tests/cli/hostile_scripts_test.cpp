@@ -15,7 +15,7 @@ namespace fs = std::filesystem;
 
 const std::string kData = std::string(GLIMMER_SOURCE_DIR) + "/tests/data/cli/";
 
-RunResult check(const std::string& script) { return runGlimmer({"check", script, "--backend", "osmesa"}); }
+RunResult check(const std::string& script) { return checkOnOsmesa(script); }
 
 TEST(CliHostile, AFolderAsTheScriptIsAUsageError) {
     TempDir dir;
@@ -156,9 +156,8 @@ struct Sandbox {
 };
 
 RunResult checkSandboxed(const std::string& script, std::vector<std::string> extra = {}) {
-    std::vector<std::string> args{"check", script, "--backend", "osmesa", "--sandbox"};
-    args.insert(args.end(), extra.begin(), extra.end());
-    return runGlimmer(args);
+    extra.insert(extra.begin(), "--sandbox");
+    return checkOnOsmesa(script, extra);
 }
 
 const std::string kOutsideTail = "; --sandbox reads only files in the script's folder and -I folders\n";

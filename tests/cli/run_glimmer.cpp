@@ -185,6 +185,12 @@ bool readPngSize(const std::string& path, unsigned& width, unsigned& height) {
     return true;
 }
 
+RunResult checkOnOsmesa(const std::string& script, const std::vector<std::string>& extra) {
+    std::vector<std::string> args{"check", script, "--backend", "osmesa"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runGlimmer(args);
+}
+
 std::string writeFile(const TempDir& dir, const std::string& name, const std::string& text) {
     std::string p = dir.file(name);
     std::ofstream(p, std::ios::binary) << text;

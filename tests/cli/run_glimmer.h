@@ -60,6 +60,9 @@ bool readPngSize(const std::string& path, unsigned& width, unsigned& height);
 // How many times `needle` occurs in `haystack`.
 int countOf(const std::string& haystack, const std::string& needle);
 
+// `glimmer check SCRIPT --backend osmesa EXTRA...`.
+RunResult checkOnOsmesa(const std::string& script, const std::vector<std::string>& extra = {});
+
 // Writes `text` as the file `name` in `dir`; its path.
 std::string writeFile(const TempDir& dir, const std::string& name, const std::string& text);
 

@@ -162,7 +162,7 @@ TEST(ObjCounts, AFaceOfTooManyCornersIsRefusedBeforeParsing) {
     for (int i = 0; i < 1001; ++i) text += " " + std::to_string(1 + i % 3);
     Mesh m;
     std::string error;
-    EXPECT_FALSE(loadObjText(text + "\n", "fan.obj", m, error));
+    EXPECT_FALSE(loadObjText(text + "\n", countObj(text + "\n"), "fan.obj", m, error));
     EXPECT_EQ(error, "cannot load OBJ 'fan.obj': the face on its line 4 has 1001 corners; Glimmer cuts faces of at "
                      "most 1000 corners into triangles");
 }
@@ -173,7 +173,7 @@ TEST(ObjCounts, ManyLargeFacesAreRefusedTogether) {
     for (int k = 0; k < 101; ++k) text += face + "\n";  // 101 x 1000^2 > 10^8
     Mesh m;
     std::string error;
-    EXPECT_FALSE(loadObjText(text, "many.obj", m, error));
+    EXPECT_FALSE(loadObjText(text, countObj(text), "many.obj", m, error));
     EXPECT_EQ(error, "cannot load OBJ 'many.obj': its faces of five corners or more are too many to cut into "
                      "triangles (corners squared add up to 101000000, at most 100000000); split them in the modeller");
 }
