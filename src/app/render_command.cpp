@@ -97,9 +97,8 @@ int runRender(const RenderOptions& o) {
     if (out.kind == Output::Kind::Png || out.kind == Output::Kind::Webp) outputs.push_back({"-o", o.output});
     for (const auto& d : dumps) outputs.push_back({fmt::format("--dump {}", d.unit), d.file});
     for (const auto& [option, file] : outputs) {
-        if (std::string input = inputOverwrittenBy(s.loaded.plan, file); !input.empty()) {
-            std::cerr << fmt::format("glimmer: error: {} {}: that is '{}', which the script reads; write the picture "
-                                     "under another name\n", option, file, input);
+        if (std::string refusal = overwritesAnInput(s.loaded.plan, option, file, "picture"); !refusal.empty()) {
+            std::cerr << refusal;
             return kExitUsage;
         }
     }

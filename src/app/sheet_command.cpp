@@ -47,9 +47,8 @@ int runSheet(const SheetOptions& o) {
     Session s;
     if (auto code = openSession(common, {}, false, s)) return *code;
     const Plan& plan = s.loaded.plan;
-    if (std::string input = inputOverwrittenBy(plan, o.output); !input.empty()) {  // driver/output_guard.h
-        std::cerr << fmt::format("glimmer: error: -o {}: that is '{}', which the script reads; write the sheet under "
-                                 "another name\n", o.output, input);
+    if (std::string refusal = overwritesAnInput(plan, "-o", o.output, "sheet"); !refusal.empty()) {  // driver/output_guard.h
+        std::cerr << refusal;
         return kExitUsage;
     }
 

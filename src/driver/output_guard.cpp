@@ -29,4 +29,12 @@ std::string inputOverwrittenBy(const Plan& plan, const std::string& output) {
     return {};
 }
 
+std::string overwritesAnInput(const Plan& plan, const std::string& option, const std::string& file,
+                              const std::string& what) {
+    const std::string input = inputOverwrittenBy(plan, file);
+    return input.empty() ? std::string()
+                         : "glimmer: error: " + option + " " + file + ": that is '" + input +
+                               "', which the script reads; write the " + what + " under another name\n";
+}
+
 }  // namespace glimmer

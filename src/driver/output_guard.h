@@ -15,4 +15,11 @@ namespace glimmer {
 // a symlink or a hard link to an input is caught too.
 std::string inputOverwrittenBy(const Plan& plan, const std::string& output);
 
+// The usage error when `file` (given with `option`: "-o", "--dump 6") is one
+// of the script's inputs: "glimmer: error: -o f.frag: that is 'f.frag', which
+// the script reads; write the picture under another name" (`what`: "picture",
+// "sheet"); "" when it is not.
+std::string overwritesAnInput(const Plan& plan, const std::string& option, const std::string& file,
+                              const std::string& what);
+
 }  // namespace glimmer
