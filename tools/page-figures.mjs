@@ -1,7 +1,7 @@
 // Opens the page in headless Chromium over the DevTools protocol and prints
 // its figures as JSON: what the page itself measured (data-first-picture-ms,
 // data-frame-ms, data-exit), the WebGL renderer it ran on, and the bytes it
-// loaded. Real time: the --dump-dom route of tools/test-web.sh runs on
+// loaded. Real time: the --dump-dom route of the web tests (tests/web/) runs on
 // virtual time, where the page's clocks stand still (a frame there
 // measures 0 ms).
 //   NODE_PATH=/usr/share/nodejs node tools/page-figures.mjs URL

@@ -1,4 +1,4 @@
-// The page's live view as a student uses it, for tools/test-web.sh: opens
+// The page's live view as a student uses it, for tests/web/live_view.sh: opens
 // SCRIPT (a bundled lesson path) in the live view, drags each named slider
 // of the panel with the mouse (real input events over the DevTools
 // protocol, at the control's place on the canvas), then breaks a shader the

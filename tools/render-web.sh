@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Renders a script through the browser page, headless, to a PNG: the page's
 # counterpart of `glimmer render`, so any script can be compared web against
-# desktop (tools/test-web.sh uses it).
+# desktop (tests/web/pictures.sh uses it).
 #   tools/render-web.sh SCRIPT -o OUT.png [--size WxH] [--set NAME=VALUE]...
 #   tools/render-web.sh SCRIPT --frames N [--size WxH] [--set ...]
 #       instead of a PNG, the page's figures in real time as JSON (time to

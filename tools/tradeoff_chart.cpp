@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "reference/pareto_chart.h"
+#include "bloom/pareto_chart.h"
 
 namespace {
 

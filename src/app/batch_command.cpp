@@ -1,5 +1,5 @@
 // glimmer batch: a class of scripts in one call, for graders. The work is
-// driver/batch.h (a pool of workers that each keep a GL context); this file
+// process/batch.h (a pool of workers that each keep a GL context); this file
 // reads the list, shards it, and writes the report.
 #include <charconv>
 #include <cerrno>
@@ -17,9 +17,9 @@
 
 #include "app/commands.h"
 #include "app/grade_batch.h"
-#include "driver/batch.h"
-#include "driver/console.h"
-#include "driver/options.h"
+#include "process/batch.h"
+#include "pipeline/console.h"
+#include "pipeline/options.h"
 #include "plan/limits.h"
 #include "util/read_file.h"
 

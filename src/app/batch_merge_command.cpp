@@ -11,7 +11,7 @@
 
 #include "app/commands.h"
 #include "app/grade_batch.h"
-#include "driver/console.h"
+#include "pipeline/console.h"
 #include "grade/grade_merge.h"
 #include "util/read_file.h"
 

@@ -1,7 +1,7 @@
 #include <iostream>
 
-#include "driver/session.h"
-#include "driver/web_check.h"
+#include "process/session.h"
+#include "pipeline/web_check.h"
 
 namespace glimmer {
 

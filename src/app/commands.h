@@ -1,11 +1,11 @@
 // The subcommands of the glimmer program: CLI11 wiring and one run function
-// each, returning the process's exit code (driver/options.h).
+// each, returning the process's exit code (pipeline/options.h).
 #pragma once
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "driver/options.h"
+#include "pipeline/options.h"
 
 namespace CLI {
 class App;

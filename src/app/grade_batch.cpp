@@ -1,6 +1,6 @@
 // glimmer batch --reference: a class graded against the teacher's solution.
 // The submissions are found and unpacked (grade/), drawn by the batch
-// workers at every setting (driver/batch.h), compared here as each result
+// workers at every setting (process/batch.h), compared here as each result
 // arrives, and written at once: a record line (what --resume and
 // batch-merge read back), then the page and the CSV, rewritten at most
 // every two seconds and at the end (app/grade_report_files.cpp).
@@ -16,9 +16,9 @@
 
 #include "lang/diagnostics.h"
 #include "app/grade_batch.h"
-#include "driver/batch.h"
-#include "driver/console.h"
-#include "driver/load_script.h"
+#include "process/batch.h"
+#include "pipeline/console.h"
+#include "pipeline/load_script.h"
 #include "grade/grade_merge.h"
 #include "grade/grade_report.h"
 #include "grade/grading.h"

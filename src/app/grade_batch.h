@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "driver/batch.h"
-#include "driver/options.h"
+#include "process/batch.h"
+#include "pipeline/options.h"
 #include "grade/grade_report.h"
 
 namespace glimmer {

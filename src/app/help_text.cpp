@@ -6,8 +6,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "driver/console.h"
-#include "driver/options.h"
+#include "pipeline/console.h"
+#include "pipeline/options.h"
 
 #ifndef GLIMMER_VERSION
 #define GLIMMER_VERSION "unknown"

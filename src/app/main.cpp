@@ -12,8 +12,8 @@
 #include <CLI/CLI.hpp>
 
 #include "app/commands.h"
-#include "driver/child_guard.h"
-#include "driver/watchdog.h"
+#include "process/child_guard.h"
+#include "process/watchdog.h"
 #include "app/help_text.h"
 #include "lang/diagnostics.h"
 #include "view/viewer.h"
@@ -65,7 +65,7 @@ int run(int argc, char** argv) {
     }
     if (auto code = applyGlobalOptions(globals)) return *code;
     // Under --sandbox the script is untrusted: its GL work runs in a child
-    // whose address space is bounded (driver/child_guard.h).
+    // whose address space is bounded (process/child_guard.h).
     auto guarded = [](const CommonOptions& o, const std::function<int()>& work) {
         return runWithTimeout(o.timeoutSeconds, o.script, work,
                               o.sandbox ? sandboxAddressSpaceBytes(o.maxMemoryMiB) : 0);

@@ -6,10 +6,10 @@
 
 #include <fmt/format.h>
 
-#include "driver/console.h"
-#include "driver/numeric_health.h"
-#include "driver/output_guard.h"
-#include "driver/session.h"
+#include "pipeline/console.h"
+#include "pipeline/numeric_health.h"
+#include "process/output_guard.h"
+#include "process/session.h"
 #include "image/animation.h"
 #include "image/image.h"
 #include "image/png_stream.h"
@@ -92,7 +92,7 @@ int runRender(const RenderOptions& o) {
         }
     }
 
-    // Never over one of the script's own files (driver/output_guard.h).
+    // Never over one of the script's own files (process/output_guard.h).
     std::vector<std::pair<std::string, std::string>> outputs;  // option, file
     if (out.kind == Output::Kind::Png || out.kind == Output::Kind::Webp) outputs.push_back({"-o", o.output});
     for (const auto& d : dumps) outputs.push_back({fmt::format("--dump {}", d.unit), d.file});

@@ -1,6 +1,6 @@
 // glimmer sheet: a labelled grid of renders for a handout, such as the seed
 // slide's uAdd = 0 / 2 / 4 row, in one command. One context and one
-// renderer serve every cell (app/sheet_drawing.h).
+// renderer serve every cell (sheet/sheet_drawing.h).
 #include <filesystem>
 #include <iostream>
 #include <sstream>
@@ -9,10 +9,10 @@
 #include <fmt/format.h>
 
 #include "app/commands.h"
-#include "driver/output_guard.h"
-#include "driver/session.h"
-#include "app/sheet_drawing.h"
-#include "driver/console.h"
+#include "process/output_guard.h"
+#include "process/session.h"
+#include "sheet/sheet_drawing.h"
+#include "pipeline/console.h"
 
 namespace glimmer {
 
@@ -47,7 +47,7 @@ int runSheet(const SheetOptions& o) {
     Session s;
     if (auto code = openSession(common, {}, false, s)) return *code;
     const Plan& plan = s.loaded.plan;
-    if (std::string refusal = overwritesAnInput(plan, "-o", o.output, "sheet"); !refusal.empty()) {  // driver/output_guard.h
+    if (std::string refusal = overwritesAnInput(plan, "-o", o.output, "sheet"); !refusal.empty()) {  // process/output_guard.h
         std::cerr << refusal;
         return kExitUsage;
     }

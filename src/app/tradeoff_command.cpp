@@ -3,7 +3,7 @@
 // kernel) and model (against an exact Gaussian of the same sigma). Prints a
 // table, writes CSV, JSON and a Pareto chart. Times are kept for every run:
 // the median places a method, its fastest and slowest run say how much a
-// difference between two methods can be trusted (reference/timing_verdict.h).
+// difference between two methods can be trusted (bloom/timing_verdict.h).
 #include <unistd.h>
 
 #include <algorithm>
@@ -20,14 +20,14 @@
 #include "app/tradeoff_report.h"
 #include "backends/context.h"
 #include "bloom/blur_methods.h"
-#include "driver/console.h"
-#include "driver/data_dir.h"
-#include "driver/prepare_script.h"
-#include "driver/stats.h"
+#include "pipeline/console.h"
+#include "process/data_dir.h"
+#include "pipeline/prepare_script.h"
+#include "pipeline/stats.h"
 #include "gl/renderer.h"
 #include "image/test_images.h"
-#include "reference/metrics.h"
-#include "reference/pareto_chart.h"
+#include "metrics/metrics.h"
+#include "bloom/pareto_chart.h"
 #include "util/temp_dir.h"
 
 namespace fs = std::filesystem;

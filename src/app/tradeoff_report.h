@@ -1,13 +1,13 @@
 // What `glimmer tradeoff` reports once every method has run: the printed
 // table and verdict, the CSV and the JSON. Kept apart from the measuring so
-// each file has one job; the chart is reference/pareto_chart.h.
+// each file has one job; the chart is bloom/pareto_chart.h.
 #pragma once
 #include <string>
 #include <vector>
 
 #include "bloom/blur_methods.h"
-#include "reference/metrics.h"
-#include "reference/timing_verdict.h"
+#include "metrics/metrics.h"
+#include "bloom/timing_verdict.h"
 
 namespace glimmer {
 
@@ -30,7 +30,7 @@ struct TradeoffRow {
 void printTradeoffTable(const std::vector<TradeoffRow>& rows);
 
 // Among the methods within 40 dB PSNR of their Gaussian: a winner only when
-// its runs separate it from the rest, else the tie (reference/timing_verdict.h),
+// its runs separate it from the rest, else the tie (bloom/timing_verdict.h),
 // and a note when `repeat` is too few runs to show the noise.
 FastestVerdict printTradeoffVerdict(const std::vector<TradeoffRow>& rows, int repeat);
 

@@ -20,8 +20,8 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "driver/prepare_script.h"
-#include "driver/stats.h"
+#include "pipeline/prepare_script.h"
+#include "pipeline/stats.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "gl/shader_build.h"

@@ -11,7 +11,7 @@
 
 #include <fmt/format.h>
 
-#include "driver/prepare_script.h"
+#include "pipeline/prepare_script.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "plan/uniform_values.h"

@@ -11,7 +11,7 @@ namespace {
 // same files the bloom lab's scripts use; see blurKernelDirs). Every pass
 // draws one quad over its whole target with quad.vert; the fragment's vST is
 // the target texel's centre, and offsets are in SOURCE texels (the
-// conventions of src/reference/blur_reference.h).
+// conventions of src/bloom/blur_reference.h).
 std::string header(const std::string& image, const std::string& format, int w, int h) {
     return fmt::format("##OpenGL GLIB\nOrtho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nTexture2D 5 {}\n"
                        "Texture2D 10 {} {} {}\nTexture2D 11 {} {} {}\nVertex quad.vert\n",

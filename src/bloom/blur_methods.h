@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "reference/blur_reference.h"
+#include "bloom/blur_reference.h"
 
 namespace glimmer {
 
@@ -27,7 +27,7 @@ struct BlurMethod {
 };
 
 // The folders the methods' scripts find their kernel files in (as -I
-// folders), given Glimmer's data folder (driver/data_dir.h).
+// folders), given Glimmer's data folder (process/data_dir.h).
 std::vector<std::string> blurKernelDirs(const std::string& dataDir);
 
 // The methods, by family, each at a few strengths.

@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "gl/shader_build.h"
+#include "shader/glsl_scan.h"
 
 namespace glimmer {
 namespace {
@@ -16,9 +17,7 @@ struct Scan {
     size_t i = 0;
 
     static bool space(char c) { return c == ' ' || c == '\t' || c == '\v' || c == '\f' || c == '\r' || c == '\n'; }
-    static bool word(char c) {
-        return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_';
-    }
+    static bool word(char c) { return isGlslWordChar(c); }
     size_t spaces() {
         size_t n = 0;
         while (i < s.size() && space(s[i])) ++i, ++n;

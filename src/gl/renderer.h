@@ -68,7 +68,7 @@ public:
     // Uploads what the CPU load step read (images, meshes; see
     // assets/assets.h), compiles and links programs, makes targets: only what
     // `assets.used` marks. Returns false when diags got errors; the renderer
-    // then draws nothing. Front ends reach this through driver/prepare_script.h.
+    // then draws nothing. Front ends reach this through pipeline/prepare_script.h.
     bool prepare(const Plan& plan, const Assets& assets, Diagnostics& diags, bool everything = false);
 
     // Draws every needed pass with these uniform values, or only the passes
@@ -98,7 +98,7 @@ public:
 
     // Called with each pass's index as it starts; while one is set, each
     // pass is finished before the next starts, so the listener knows which
-    // pass is drawing (--timeout names it; driver/watchdog.h).
+    // pass is drawing (--timeout names it; process/watchdog.h).
     void setPassListener(std::function<void(int pass)> listener) { passListener_ = std::move(listener); }
 
     // Copies the screen (texture < 0) or a texture target to the window's

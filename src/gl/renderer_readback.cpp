@@ -40,6 +40,14 @@ Image Renderer::readTextureFloat(int texture) const {
     if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
     const TextureObject& t = textures_[size_t(texture)];
     if (t.target != GL_TEXTURE_2D) return {};
+    // OpenGL ES reads an 8-bit target only as bytes (GL_FLOAT is an error
+    // there and leaves zeros): read those, and give them as floats.
+    if (gl_->es && !t.floatData) {
+        Image bytes = readTexture(texture);
+        Image img = Image::rgbaF32(bytes.width, bytes.height);
+        for (size_t i = 0; i < bytes.u8.size() && i < img.f32.size(); ++i) img.f32[i] = bytes.u8[i] / 255.f;
+        return img;
+    }
     Image img = Image::rgbaF32(t.width, t.height);
     gl_->BindTexture(GL_TEXTURE_2D, t.id);
     gl_->PixelStorei(GL_PACK_ALIGNMENT, 4);

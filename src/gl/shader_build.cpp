@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cstring>
-#include <sstream>
 
 #include <fmt/format.h>
 
@@ -46,17 +45,8 @@ PreparedSource prepareSource(const std::string& source, const std::string& prelu
     // #version must stay the first thing the compiler sees, so the prelude
     // goes after it. Line numbers are mapped back rather than fixed with
     // #line, whose meaning changed between GLSL versions.
-    std::istringstream in(source);
-    std::string line;
-    int n = 0, versionLine = 0;
-    while (std::getline(in, line)) {
-        ++n;
-        auto p = line.find_first_not_of(" \t");
-        if (p != std::string::npos && line.compare(p, 8, "#version") == 0) {
-            versionLine = n;
-            break;
-        }
-    }
+    // The one #version reader (shader/glsl_scan.h): one in a comment does not count.
+    const int versionLine = glslVersionOf(source).line;
     out.insertedAfter = versionLine;
     for (char ch : prelude) out.insertedLines += ch == '\n';
     size_t cut = 0;

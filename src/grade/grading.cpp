@@ -8,8 +8,8 @@
 
 #include <fmt/format.h>
 
-#include "reference/metrics.h"
-#include "reference/ssim.h"
+#include "metrics/metrics.h"
+#include "metrics/ssim.h"
 
 namespace glimmer {
 

@@ -32,7 +32,7 @@ std::string settingLabel(const Setting& s);
 
 struct Comparison {
     double psnr = 0;   // dB over RGB, peak 1; +inf when identical
-    double ssim = 0;   // mean SSIM of the luma (reference/ssim.h), 8x8 windows
+    double ssim = 0;   // mean SSIM of the luma (metrics/ssim.h), 8x8 windows
     bool blank = false;  // the student's picture is a single colour and the solution's is not
 };
 

@@ -22,7 +22,7 @@ struct Diagnostic {
     std::string message;
     // A line of the OpenGL driver's compile or link log (gl/compiler_log):
     // its words are the driver's, and its later errors may only follow from
-    // an earlier one (driver/error_cascades.h).
+    // an earlier one (pipeline/error_cascades.h).
     bool fromDriver = false;
 };
 

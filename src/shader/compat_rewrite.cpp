@@ -113,16 +113,7 @@ CompatRewrite rewriteCompatBuiltins(std::string_view s, CompatStage stage,
             continue;
         }
         lineStart = false;
-        if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
-            size_t end = s.find('\n', i);
-            if (end == std::string_view::npos) end = s.size();
-            body.append(s.substr(i, end - i));
-            i = end;
-            continue;
-        }
-        if (c == '/' && i + 1 < s.size() && s[i + 1] == '*') {
-            size_t end = s.find("*/", i + 2);
-            end = end == std::string_view::npos ? s.size() : end + 2;
+        if (size_t end = commentEnd(s, i); end != i) {  // kept as written
             for (size_t k = i; k < end; ++k) line += s[k] == '\n';
             body.append(s.substr(i, end - i));
             i = end;

@@ -32,6 +32,33 @@ void readVersion(std::string_view l, size_t p, GlslVersion& v) {
 
 }  // namespace
 
+size_t commentEnd(std::string_view s, size_t i) {
+    if (i + 1 >= s.size() || s[i] != '/') return i;
+    if (s[i + 1] == '/') {
+        size_t end = s.find('\n', i);
+        return end == std::string_view::npos ? s.size() : end;
+    }
+    if (s[i + 1] == '*') {
+        size_t end = s.find("*/", i + 2);
+        return end == std::string_view::npos ? s.size() : end + 2;
+    }
+    return i;
+}
+
+std::string blankComments(std::string_view text) {
+    std::string s(text);
+    for (size_t i = 0; i < s.size();) {
+        size_t end = commentEnd(s, i);
+        if (end == i) {
+            ++i;
+            continue;
+        }
+        for (; i < end; ++i)
+            if (s[i] != '\n') s[i] = ' ';
+    }
+    return s;
+}
+
 bool isWholeWordAt(std::string_view text, size_t at, size_t length) {
     if (at > text.size() || length > text.size() - at) return false;
     bool before = at > 0 && isGlslWordChar(text[at - 1]);

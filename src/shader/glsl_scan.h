@@ -42,6 +42,16 @@ struct GlslVersion {
 };
 GlslVersion glslVersionOf(std::string_view source);
 
+// Where a comment that starts at `i` of `text` ends: past the "*/" of a
+// block comment (the text's end when it never closes), at the '\n' that ends
+// a line comment (not past it: the newline is not the comment's); `i` itself
+// when no comment starts there. Every rewrite skips comments through this.
+size_t commentEnd(std::string_view text, size_t i);
+
+// `text` with every comment blanked (each character a space, newlines
+// kept), so offsets, lines and columns stay those of the original.
+std::string blankComments(std::string_view text);
+
 // The words of `text` (runs of word characters), in order, as views into it.
 std::vector<std::string_view> glslWords(std::string_view text);
 

@@ -34,13 +34,8 @@ std::vector<Token> tokenize(std::string_view s) {
             ++i;
             continue;
         }
-        if (c == '/' && i + 1 < n && s[i + 1] == '/') {
-            while (i < n && s[i] != '\n') ++i;
-            continue;
-        }
-        if (c == '/' && i + 1 < n && s[i + 1] == '*') {
-            size_t e = s.find("*/", i + 2);
-            i = e == std::string_view::npos ? n : e + 2;
+        if (size_t e = commentEnd(s, i); e != i) {
+            i = e;
             continue;  // a block comment does not end the line
         }
         if (c == '#' && lineStart) {

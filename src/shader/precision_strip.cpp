@@ -52,13 +52,7 @@ PrecisionStripResult stripPrecisionQualifiers(std::string_view source) {
             continue;
         }
         lineStart = false;
-        if (c == '/' && i + 1 < t.size() && t[i + 1] == '/') {
-            while (i < t.size() && t[i] != '\n') ++i;
-            continue;
-        }
-        if (c == '/' && i + 1 < t.size() && t[i + 1] == '*') {
-            size_t end = t.find("*/", i + 2);
-            end = end == std::string::npos ? t.size() : end + 2;
+        if (size_t end = commentEnd(t, i); end != i) {
             for (; i < end; ++i) line += t[i] == '\n';
             continue;
         }

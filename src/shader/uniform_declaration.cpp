@@ -20,35 +20,21 @@ bool hasWord(const std::string& s, const std::string& word, size_t from, size_t&
 }  // namespace
 
 int uniformDeclarationLine(const std::string& text, const std::string& name) {
-    bool inBlockComment = false;
+    // Comments become blanks, as the compiler reads them (a block comment may
+    // span lines; the line numbers stay).
+    const std::string code = blankComments(text);
     int line = 1;
-    size_t start = 0;
-    while (start <= text.size()) {
-        size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        // The line without its comments (a block comment may span lines).
-        std::string code;
-        for (size_t i = start; i < end; ++i) {
-            if (inBlockComment) {
-                if (text.compare(i, 2, "*/") == 0) inBlockComment = false, ++i;
-                continue;
-            }
-            if (text.compare(i, 2, "//") == 0) break;
-            if (text.compare(i, 2, "/*") == 0) {
-                inBlockComment = true;
-                ++i;
-                continue;
-            }
-            code += text[i];
-        }
+    for (size_t start = 0; start <= code.size(); ++line) {
+        size_t end = code.find('\n', start);
+        if (end == std::string::npos) end = code.size();
+        const std::string one = code.substr(start, end - start);
         size_t afterUniform = 0, afterName = 0;
-        if (hasWord(code, "uniform", 0, afterUniform) && hasWord(code, name, afterUniform, afterName)) {
-            size_t semicolon = code.find(';', afterUniform);
+        if (hasWord(one, "uniform", 0, afterUniform) && hasWord(one, name, afterUniform, afterName)) {
+            size_t semicolon = one.find(';', afterUniform);
             if (semicolon == std::string::npos || afterName <= semicolon) return line;
         }
-        if (end == text.size()) break;
+        if (end == code.size()) break;
         start = end + 1;
-        ++line;
     }
     return 0;
 }

@@ -92,14 +92,8 @@ UniformInitializers takeUniformInitializers(std::string_view source) {
     bool lineStart = true;
     for (size_t i = 0; i < s.size();) {
         const char c = s[i];
-        if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
-            i = s.find('\n', i);
-            if (i == std::string::npos) break;
-            continue;
-        }
-        if (c == '/' && i + 1 < s.size() && s[i + 1] == '*') {
-            size_t end = s.find("*/", i + 2);
-            i = end == std::string::npos ? s.size() : end + 2;
+        if (size_t end = commentEnd(s, i); end != i) {
+            i = end;
             continue;
         }
         if (c == '#' && lineStart) {  // a preprocessor line (continued lines aside)

@@ -11,18 +11,10 @@ namespace {
 // The text with comments and preprocessor lines blanked (newlines kept), so
 // offsets and line numbers stay those of the original.
 std::string codeOnly(const std::string& t) {
-    std::string s = t;
-    for (size_t i = 0; i < s.size(); ++i) {
-        if (s.compare(i, 2, "//") == 0 || (s[i] == '#' && (i == 0 || s[i - 1] == '\n'))) {
+    std::string s = blankComments(t);
+    for (size_t i = 0; i < s.size(); ++i)
+        if (s[i] == '#' && (i == 0 || s[i - 1] == '\n'))
             while (i < s.size() && s[i] != '\n') s[i++] = ' ';
-        } else if (s.compare(i, 2, "/*") == 0) {
-            size_t end = s.find("*/", i + 2);
-            end = end == std::string::npos ? s.size() : end + 2;
-            for (; i < end; ++i)
-                if (s[i] != '\n') s[i] = ' ';
-            --i;
-        }
-    }
     return s;
 }
 

@@ -1,6 +1,6 @@
 // A script's shader stage (plan/plan.h) as the translator names it
 // (shader/web_translate.h): the one mapping, for the two places that hand
-// a Program's stages to the translator, `check --web` (driver/web_check)
+// a Program's stages to the translator, `check --web` (pipeline/web_check)
 // and the renderer on OpenGL ES (gl/shader_build). Header-only, so the
 // translator library itself stays free of the plan.
 #pragma once

@@ -1,5 +1,6 @@
 #include "view/view_commands.h"
 
+#include <cmath>
 #include <sstream>
 
 #include "util/numbers.h"
@@ -91,11 +92,16 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         c.kind = ViewCommand::Kind::Values;
     } else if (word == "probe") {
         c.kind = ViewCommand::Kind::Probe;
-        c.report = args.empty();
-        if (!c.report && (args.size() != 1 || !toOnOff(args[0], c.on))) {
-            error = "usage: probe [on|off]";
+        c.report = args.empty() || args.size() == 2;
+        double x = -1, y = -1;
+        bool ok = args.empty() || (args.size() == 1 && toOnOff(args[0], c.on)) ||
+                  (args.size() == 2 && toNumber(args[0], x) && toNumber(args[1], y) && x >= 0 && y >= 0 &&
+                   x < 16384 && y < 16384 && x == std::floor(x) && y == std::floor(y));
+        if (!ok) {
+            error = "usage: probe [on|off], or probe X Y (a pixel of the picture, top left 0 0)";
             return std::nullopt;
         }
+        c.x = int(x), c.y = int(y);
     } else if (word == "split") {
         c.kind = ViewCommand::Kind::Split;
         if (args.size() == 1 && toOnOff(args[0], c.on) && !c.on) return c;

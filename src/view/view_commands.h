@@ -16,7 +16,8 @@ struct ViewCommand {
     int unit = -1;      // Show, Split's left side: texture unit, -1 for the screen
     int right = -1;     // Split's right side: texture unit, -1 for the screen
     bool on = true;     // Values, Probe, Split: on or off
-    bool report = false;  // Probe with no argument: print what the probe reads now
+    bool report = false;  // Probe with no argument or at X Y: print what the probe reads
+    int x = -1, y = -1;   // Probe X Y: that pixel of the picture (top row 0), not the pointer's
     // It only prints (help, frames): the viewer does not count it as the user at work.
     bool onlyAsks() const { return kind == Kind::Help || kind == Kind::Frames; }
 };

@@ -114,6 +114,7 @@ std::string helpText() {
            "  show UNIT|screen   inspect the render target on a texture unit, or the picture\n"
            "  values on|off      the \"Show values\" overlay (also burned into saves)\n"
            "  probe on|off       the pixel probe; \"probe\" alone prints what it reads under the pointer\n"
+           "  probe X Y          prints pixel (X, Y) of the finished picture (top left 0 0)\n"
            "  split L R | off    before/after split: unit L (or screen) left, R right of the divider\n"
            "  scale S            the panel's text and controls at S (0.5 to 4), as --ui-scale\n"
            "  help               print this list\n"

@@ -20,11 +20,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "backends/glfw_window.h"
-#include "driver/options.h"
-#include "driver/prepare_script.h"
-#include "gl/ui_texture.h"
+#include "pipeline/options.h"
+#include "pipeline/prepare_script.h"
 #include "gl/window_frame.h"
-#include "image/ttf_text.h"
 #include "plan/dependencies.h"
 #include "view/file_watch.h"
 #include "view/panel.h"
@@ -41,7 +39,6 @@ using Clock = std::chrono::steady_clock;
 // While a frame draws and nothing asks for the window, slices follow each
 // other without a window frame in between, except to show progress this often.
 constexpr auto kProgressEvery = std::chrono::milliseconds(100);
-constexpr int kOverlayAt = 8;  // the "Show values" box's top left, in the picture and in the window
 
 class Viewer {
 public:
@@ -105,7 +102,6 @@ public:
         ImGui_ImplOpenGL3_Init("#version 130");
         float sx = 1, sy = 1;
         if (options_.uiScale <= 0) glfwGetWindowContentScale(w, &sx, &sy);
-        overlayTexture_ = UiTexture::create([&](const char* n) { return window_.getProcAddress(n); }, why);
         applyUiScale(chooseUiScale(options_.uiScale, sx, sy), false);
         gWindowAlive = true;
         FileWaker waker(watch_.notifyFd());
@@ -172,7 +168,7 @@ public:
             renderScene();
             std::vector<ViewCommand> asked;
             if (s_.panelShown) asked = panel(fbw, fbh);
-            overlay();
+            core_.drawValues();
             ImGui::Render();
             frame_->begin(fbw, fbh, 0.12f, 0.12f, 0.14f);
             presentPicture(fbw, fbh);
@@ -183,8 +179,7 @@ public:
             layout();
         }
         gWindowAlive = false;
-        s_.renderer.reset();
-        overlayTexture_.reset();  // while the context is still current
+        core_.releaseGl();  // while the context is still current
         ImGui_ImplOpenGL3_Shutdown();
         ImGui_ImplGlfw_Shutdown();
         ImGui::DestroyContext();
@@ -273,37 +268,6 @@ private:
         auto asked = drawPanelWindow(s_, float(px + pw), float(fbh), panelW_, panelH_);
         if (fullscreen_) panelW_ = std::min(panelW_, fbw / 2);
         return asked;
-    }
-
-    // "Show values": one line per control, over a dark box, at the
-    // picture's top left, in DejaVu: the same layer a saved PNG gets.
-    void overlay() {
-        if (!s_.showValues) return;
-        const Image& layer = overlayLayer();
-        if (layer.empty() || !overlayTexture_) return;
-        if (overlayUploaded_ != overlayMadeFor_) {
-            overlayId_ = overlayTexture_->upload(layer);
-            overlayUploaded_ = overlayMadeFor_;
-        }
-        if (!overlayId_) return;
-        // The picture's top left is the window's: the same offset as in a saved PNG.
-        ImGui::GetForegroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(overlayId_)),
-                                                 ImVec2(kOverlayAt, kOverlayAt),
-                                                 ImVec2(float(kOverlayAt + layer.width), float(kOverlayAt + layer.height)));
-    }
-
-    // The "Show values" overlay as a layer (image/ttf_text.h labelLayer):
-    // DejaVu at the panel's scale, remade only when its text changes. The
-    // window draws it over the picture and a save lays it over the PNG, so
-    // both carry the same pixels in the same place.
-    const Image& overlayLayer() {
-        std::string text = overlayText(s_);
-        std::string key = fmt::format("{}|{}", overlayPx_, text);
-        if (key != overlayMadeFor_) {
-            overlay_ = text.empty() ? Image{} : labelLayer(text, overlayPx_);
-            overlayMadeFor_ = key;
-        }
-        return overlay_;
     }
 
     void watchFilesOf(const Plan& plan) {
@@ -411,7 +375,7 @@ private:
             ImGui_ImplOpenGL3_CreateFontsTexture();
         }
         uiScale_ = scale;
-        overlayPx_ = 15.f * scale;  // legible from the back of a room at --ui-scale 2
+        core_.setValuesTextPx(15.f * scale);  // legible from the back of a room at --ui-scale 2
         std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
     }
 
@@ -467,10 +431,9 @@ private:
         }
         // A command may have changed values since the last frame, and a
         // frame may be under way: what is saved is the finished picture.
-        Image img = hardcopy ? core_.renderAtSize(s_.hardcopy[0], s_.hardcopy[1]) : core_.finishedPicture();
+        Image img = core_.savedPicture(hardcopy);
         noteHealth();
         if (img.empty()) return;
-        if (s_.showValues) layOver(img, overlayLayer(), kOverlayAt, kOverlayAt);
         std::string why;
         if (writePng(file, img, why)) s_.status = "saved " + file;
         else s_.status = why;
@@ -495,11 +458,6 @@ private:
     std::set<std::string> printedWarnings_;
     PictureDrag drag_;
     std::unique_ptr<WindowFrame> frame_;  // clears the window; the viewer itself calls no GL
-    std::unique_ptr<UiTexture> overlayTexture_;  // the overlay layer, for ImGui to draw
-    Image overlay_;
-    std::string overlayMadeFor_, overlayUploaded_;
-    unsigned overlayId_ = 0;
-    float overlayPx_ = 15.f;
     float uiScale_ = 1.f;
     const double sliceMs_ = sliceBudgetMs();
     Clock::time_point lastInput_{};

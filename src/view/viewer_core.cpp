@@ -8,7 +8,10 @@
 
 #include <fmt/format.h>
 
+#include "gl/ui_texture.h"
+#include "image/ttf_text.h"
 #include "plan/dependencies.h"
+#include "view/panel.h"
 
 namespace glimmer {
 
@@ -23,6 +26,16 @@ double sliceBudgetMs() {
 
 ViewerCore::ViewerCore(ViewerSource source, GetProcAddress getProc)
     : source_(std::move(source)), getProc_(std::move(getProc)) {}
+
+ViewerCore::~ViewerCore() = default;
+
+void ViewerCore::releaseGl() {
+    drawing_.reset();
+    s_.renderer.reset();
+    valuesTexture_.reset();
+    valuesId_ = 0;
+    valuesUploaded_.clear();
+}
 
 bool ViewerCore::prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer,
                            Diagnostics& diags) {
@@ -126,27 +139,71 @@ Image ViewerCore::renderAtSize(int w, int h) {
     return r->readScreen();
 }
 
-const std::string& ViewerCore::probe(double x, double y, int pw, int ph, bool tooltip) {
-    s_.probeText.clear();
-    if (!s_.probe || !s_.renderer || s_.compare || pw < 1 || ph < 1) return s_.probeText;
+Image ViewerCore::savedPicture(bool hardcopy) {
+    Image img = hardcopy ? renderAtSize(s_.hardcopy[0], s_.hardcopy[1]) : finishedPicture();
+    if (!img.empty() && s_.showValues) layOver(img, valuesLayer(), kOverlayAt, kOverlayAt);
+    return img;
+}
+
+const Image& ViewerCore::valuesLayer() {
+    std::string text = overlayText(s_);
+    std::string key = fmt::format("{}|{}", valuesPx_, text);
+    if (key != valuesMadeFor_) {
+        valuesLayer_ = text.empty() ? Image{} : labelLayer(text, valuesPx_);
+        valuesMadeFor_ = key;
+    }
+    return valuesLayer_;
+}
+
+void ViewerCore::drawValues() {
+    if (!s_.showValues) return;
+    const Image& layer = valuesLayer();
+    if (layer.empty()) return;
+    if (!valuesTexture_) {
+        std::string why;
+        valuesTexture_ = UiTexture::create(getProc_, why);
+        if (!valuesTexture_) return;
+    }
+    if (valuesUploaded_ != valuesMadeFor_) {
+        valuesId_ = valuesTexture_->upload(layer);
+        valuesUploaded_ = valuesMadeFor_;
+    }
+    if (!valuesId_) return;
+    // The picture's top left is the window's: the same offset as in a saved PNG.
+    ImGui::GetForegroundDrawList()->AddImage(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(valuesId_)),
+                                             ImVec2(kOverlayAt, kOverlayAt),
+                                             ImVec2(float(kOverlayAt + layer.width), float(kOverlayAt + layer.height)));
+}
+
+const Image& ViewerCore::probeImage() {
     if (probeVersion_ != pictureVersion_ || probeTexture_ != s_.shownTexture) {
         probeImage_ = s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTextureFloat(s_.shownTexture);
         probeVersion_ = pictureVersion_;
         probeTexture_ = s_.shownTexture;
     }
-    const Image& img = probeImage_;
-    if (img.empty()) return s_.probeText;
-    double scale = std::min(double(pw) / img.width, double(ph) / img.height);
-    double ox = (pw - img.width * scale) / 2, oy = (ph - img.height * scale) / 2;
-    int ix = int(std::floor((x - ox) / scale)), iy = int(std::floor((y - oy) / scale));
-    if (ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return s_.probeText;
+    return probeImage_;
+}
+
+std::string ViewerCore::probeTextAt(int ix, int iy) {
+    const Image& img = probeImage();
+    if (img.empty() || ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return "";
     size_t i = (size_t(iy) * size_t(img.width) + size_t(ix)) * 4;
     float v[4];
     for (int c = 0; c < 4; ++c) v[c] = img.type == Image::Type::F32 ? img.f32[i + size_t(c)] : img.u8[i + size_t(c)] / 255.f;
-    s_.probeText = fmt::format("({}, {}) of {}: r {:.4g}  g {:.4g}  b {:.4g}  a {:.4g}", ix, iy,
-                               s_.shownTexture < 0 ? std::string("screen") : fmt::format("texture {}", s_.shownTexture),
-                               v[0], v[1], v[2], v[3]);
-    if (tooltip) {
+    return fmt::format("({}, {}) of {}: r {:.4g}  g {:.4g}  b {:.4g}  a {:.4g}", ix, iy,
+                       s_.shownTexture < 0 ? std::string("screen") : fmt::format("texture {}", s_.shownTexture), v[0],
+                       v[1], v[2], v[3]);
+}
+
+const std::string& ViewerCore::probe(double x, double y, int pw, int ph, bool tooltip) {
+    s_.probeText.clear();
+    if (!s_.probe || !s_.renderer || s_.compare || pw < 1 || ph < 1) return s_.probeText;
+    const Image& img = probeImage();
+    if (img.empty()) return s_.probeText;
+    double scale = std::min(double(pw) / img.width, double(ph) / img.height);
+    double ox = (pw - img.width * scale) / 2, oy = (ph - img.height * scale) / 2;
+    s_.probeText = probeTextAt(int(std::floor((x - ox) / scale)), int(std::floor((y - oy) / scale)));
+    if (tooltip && !s_.probeText.empty()) {
         ImGui::BeginTooltip();
         ImGui::TextUnformatted(s_.probeText.c_str());
         ImGui::EndTooltip();
@@ -194,7 +251,15 @@ bool ViewerCore::apply(const ViewCommand& c, std::string& said) {
     case ViewCommand::Kind::Show: textureOnUnit("show", c.unit, s_.shownTexture, said); return true;
     case ViewCommand::Kind::Values: s_.showValues = c.on; return true;
     case ViewCommand::Kind::Probe:
-        if (!c.report) s_.probe = c.on;
+        if (c.x >= 0) {  // a pixel of the finished picture, wherever the pointer is
+            if (!s_.renderer || !s_.good) {
+                said = "probe: nothing is shown yet";
+                return true;
+            }
+            draw(std::numeric_limits<double>::infinity());
+            said = probeTextAt(c.x, c.y);
+            said = said.empty() ? fmt::format("probe: ({}, {}) is outside the picture", c.x, c.y) : "probe " + said;
+        } else if (!c.report) s_.probe = c.on;
         else if (!s_.probe) said = "probe: off (probe on turns it on)";
         else if (s_.probeText.empty()) said = "probe: the pointer is not over the picture";
         else said = "probe " + s_.probeText;

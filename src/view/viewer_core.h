@@ -13,9 +13,12 @@
 //   finished   the picture once every slice is drawn (Save, snapshots)
 //   hardcopy   the script at another size with the values carried over
 //   probe      the float value of every channel under a point of the picture
+//   values     "Show values": the controls' values in a box over the
+//              picture's top left, the same pixels in the window, the page
+//              and a saved PNG
 //
 // Contract: no GLFW, no Emscripten, no OpenGL calls of its own (the Renderer
-// makes them); Dear ImGui only for the probe's tooltip. One core per shown
+// makes them); Dear ImGui only for the probe's tooltip and the values box. One core per shown
 // script; the shell owns the context and keeps it current.
 #pragma once
 #include <chrono>
@@ -26,10 +29,14 @@
 #include <string>
 #include <vector>
 
-#include "driver/prepare_script.h"
+#include "pipeline/prepare_script.h"
 #include "view/view_commands.h"
 #include "view/view_model.h"
 #include "view/viewer_state.h"
+
+namespace glimmer {
+class UiTexture;
+}
 
 namespace glimmer {
 
@@ -51,6 +58,8 @@ struct ViewerSource {
 // final picture sooner (fewer bands and frames between them).
 constexpr double kSliceMs = 18;
 constexpr double kIdleSliceFactor = 5;
+// The "Show values" box's top left, in the picture and in the window.
+constexpr int kOverlayAt = 8;
 // The slice budget: kSliceMs, or $GLIMMER_SLICE_MS for benchmarks
 // (tools/bench-viewer.sh), where 0 draws every frame whole, as before slices.
 double sliceBudgetMs();
@@ -59,6 +68,10 @@ class ViewerCore {
 public:
     using Clock = std::chrono::steady_clock;
     ViewerCore(ViewerSource source, GetProcAddress getProc);
+    ~ViewerCore();
+    // Lets go of every GL object (the renderer, the values box's texture):
+    // the shell calls it while its context is still current.
+    void releaseGl();
 
     ViewerState& state() { return s_; }
     const ViewerState& state() const { return s_; }
@@ -82,11 +95,24 @@ public:
     Image finishedPicture();
     // glman's hardcopy: the script at w x h on a renderer of its own.
     Image renderAtSize(int w, int h);
+    // What Save writes: the finished picture (or the hardcopy at
+    // s.hardcopy's size), with the values box laid over it when "Show
+    // values" is on, so a handout records its own parameters.
+    Image savedPicture(bool hardcopy);
 
-    // A command of the panel, --exec or standard input that changes only
-    // what is shown (set, show, values, probe, split): applied, with what to
-    // tell the user in `said` ("" when nothing); false for the shell's own
-    // (reload, save, scale, help, frames, quit).
+    // "Show values": the box as a layer (image/ttf_text.h labelLayer) in
+    // DejaVu at `px` pixels (the panel's scale), remade only when its text
+    // changes; empty when off or nothing to show. drawValues() puts it over
+    // the picture (at kOverlayAt of the window) with Dear ImGui.
+    void setValuesTextPx(float px) { valuesPx_ = px; }
+    const Image& valuesLayer();
+    void drawValues();
+
+    // A command of the panel, --exec, standard input or the page that
+    // changes only what is shown (set, show, values, probe, split): applied,
+    // with what to tell the user in `said` ("" when nothing); false for the
+    // shell's own (reload, save, scale, help, frames, quit). `probe X Y`
+    // reads that pixel of the finished picture.
     bool apply(const ViewCommand& c, std::string& said);
 
     // The probe: the values under (x, y) of a picture shown in a pw x ph
@@ -117,6 +143,11 @@ private:
     // `said`, when no target is on that unit.
     bool textureOnUnit(const char* command, int unit, int& texture, std::string& said) const;
     bool prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer, Diagnostics& diags);
+    // The picture the probe reads (the screen or the shown target, floats
+    // where it holds them), read back once per new picture; the probe's
+    // text for its pixel (ix, iy), "" outside it.
+    const Image& probeImage();
+    std::string probeTextAt(int ix, int iy);
 
     ViewerSource source_;
     GetProcAddress getProc_;
@@ -131,6 +162,11 @@ private:
     std::uint64_t pictureVersion_ = 0, probeVersion_ = ~0ull;
     int probeTexture_ = -2;
     Image probeImage_;
+    std::unique_ptr<UiTexture> valuesTexture_;  // the values box, uploaded for Dear ImGui
+    Image valuesLayer_;
+    std::string valuesMadeFor_, valuesUploaded_;
+    unsigned valuesId_ = 0;
+    float valuesPx_ = 15.f;
 };
 
 }  // namespace glimmer

@@ -12,8 +12,8 @@
 
 #include <glm/mat4x4.hpp>
 
-#include "driver/load_script.h"
-#include "driver/numeric_health.h"
+#include "pipeline/load_script.h"
+#include "pipeline/numeric_health.h"
 #include "gl/renderer.h"
 #include "plan/dependencies.h"
 #include "plan/uniform_values.h"

@@ -14,10 +14,10 @@
 #include <sstream>
 #include <string>
 
-#include "driver/console.h"
-#include "driver/load_script.h"
-#include "driver/prepare_script.h"
-#include "driver/web_check.h"
+#include "pipeline/console.h"
+#include "pipeline/load_script.h"
+#include "pipeline/prepare_script.h"
+#include "pipeline/web_check.h"
 #include "web/page_state.h"
 
 namespace {

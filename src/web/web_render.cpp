@@ -1,6 +1,6 @@
 // The browser build's drawing entry point: `glimmer render` of a script on
 // the page's WebGL 2 canvas, through the same steps as the desktop
-// (driver/prepare_script.h: plan, load files, upload; the one Renderer).
+// (pipeline/prepare_script.h: plan, load files, upload; the one Renderer).
 // WebGL 2 takes GLSL ES 3.00 only: until the page translates classroom
 // shaders, a script draws here when its shaders are GLSL ES (the built-ins
 // by the names in shader/compat_builtins.h).
@@ -27,8 +27,8 @@
 #include <string>
 
 #include "backends/context.h"
-#include "driver/console.h"
-#include "driver/prepare_script.h"
+#include "pipeline/console.h"
+#include "pipeline/prepare_script.h"
 #include "image/image.h"
 #include "plan/uniform_values.h"
 #include "web/page_state.h"

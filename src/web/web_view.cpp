@@ -24,8 +24,11 @@
 //       pixels after the last frame ("" when not shown): where a test clicks.
 //   glimmer_view_drawn() -> the passes drawn since the last call, "i j ..."
 //       by index (a slider reaches only the passes after it).
-//   glimmer_view_snapshot() -> 1 when the picture on show (without the panel)
+//   glimmer_view_snapshot() -> 1 when the picture on show (without the panel,
+//       with the values box when "Show values" is ticked, as Save writes it)
 //       is now in glimmer_pixels; 0 when no script has drawn yet.
+//   glimmer_view_command(line) -> one of `glimmer view`'s commands through
+//       the same core, and what the window would print for it.
 //   glimmer_view_sheet(vary), glimmer_view_sheet_suggestion(): Save sheet
 //       (below).
 //   glimmer_view_messages() -> the last load's diagnostics for the editor, a
@@ -51,9 +54,9 @@
 
 #include <fmt/format.h>
 
-#include "app/sheet_drawing.h"
-#include "driver/console.h"
-#include "driver/prepare_script.h"
+#include "sheet/sheet_drawing.h"
+#include "pipeline/console.h"
+#include "pipeline/prepare_script.h"
 #include "gl/window_frame.h"
 #include "view/panel.h"
 #include "view/view_model.h"
@@ -161,13 +164,8 @@ int applyAsked(WebViewer& v, const std::vector<ViewCommand>& asked) {
     for (const auto& c : asked) {
         if (c.kind == ViewCommand::Kind::Reload) out |= 1;
         if (c.kind != ViewCommand::Kind::Save || !v.s.renderer) continue;
-        if (c.unit == -2) {
-            glimmer_web::pagePicture() = v.core.renderAtSize(v.s.hardcopy[0], v.s.hardcopy[1]);
-            out |= 4;
-        } else {
-            glimmer_web::pagePicture() = v.core.finishedPicture();
-            out |= 2;
-        }
+        glimmer_web::pagePicture() = v.core.savedPicture(c.unit == -2);
+        out |= c.unit == -2 ? 4 : 2;
     }
     return out;
 }
@@ -242,6 +240,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     else
         s.probeText.clear();
     auto asked = drawPanelWindow(s, float(v.layout.panelX), float(v.layout.windowH), v.panelW, v.panelH);
+    v.core.drawValues();  // "Show values", over the picture's top left
     for (auto [bit, kind] : {std::pair{1, ViewCommand::Kind::Reload}, std::pair{2, ViewCommand::Kind::Save}})
         if (v.keyAsks & bit) {
             ViewCommand c;
@@ -253,6 +252,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     v.frame->begin(v.layout.windowW, v.layout.windowH, 0.12f, 0.12f, 0.14f);
     presentPicture(s, v.layout.windowH, 0, 0, v.width, v.height);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    v.core.noteFrame();  // for `frames`, as the window notes its own
     return applyAsked(v, asked);
 }
 
@@ -302,8 +302,45 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_drawn() {
 
 EMSCRIPTEN_KEEPALIVE int glimmer_view_snapshot() {
     if (!viewer || !viewer->s.renderer) return 0;
-    glimmer_web::pagePicture() = viewer->core.finishedPicture();
+    glimmer_web::pagePicture() = viewer->core.savedPicture(false);
     return glimmer_web::pagePicture().empty() ? 0 : 1;
+}
+
+// One of `glimmer view`'s commands (view/view_commands.h: set, show,
+// values, probe [X Y], split, save, reload, frames), applied by the same
+// core as the window's. Returns what the window prints for it, a line each
+// without its "glimmer view: " ("" for nothing); `save` puts the picture
+// in glimmer_pixels (the page downloads it) and says "saved NAME"; reload
+// is the page's to do: "reload" back.
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_command(const char* line) {
+    static std::string said;
+    said.clear();
+    std::string error;
+    auto c = parseViewCommand(line ? line : "", error);
+    if (!c) {
+        said = error.empty() ? "" : "error: " + error;
+        return said.c_str();
+    }
+    if (!viewer) {
+        said = "error: no script is open";
+        return said.c_str();
+    }
+    if (viewer->core.apply(*c, said)) return said.c_str();
+    switch (c->kind) {
+    case ViewCommand::Kind::Save:
+        if (!viewer->s.renderer || !viewer->s.good) {
+            said = "nothing to save yet";
+            break;
+        }
+        glimmer_web::pagePicture() = viewer->core.savedPicture(c->unit == -2);
+        said = "saved " + c->name;
+        break;
+    case ViewCommand::Kind::Frames: said = viewer->core.frameStats(); break;
+    case ViewCommand::Kind::Reload: said = "reload"; break;
+    default: said = "error: the page has no '" + std::string(line) + "' (the browser's own zoom, help and tab do that)";
+    }
+    while (!said.empty() && said.back() == '\n') said.pop_back();
+    return said.c_str();
 }
 
 // A slice's budget in ms; 0 draws every frame whole (the page before

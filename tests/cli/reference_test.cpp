@@ -5,7 +5,7 @@
 // tests/common/calibration_scene.h and tests/render/superblur_reference_test.cpp.
 #include <gtest/gtest.h>
 
-#include "app/sheet_layout.h"
+#include "sheet/sheet_layout.h"
 #include "common/calibration_scene.h"
 #include "run_glimmer.h"
 

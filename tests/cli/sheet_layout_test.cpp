@@ -4,7 +4,7 @@
 // headers mean.
 #include <gtest/gtest.h>
 
-#include "app/sheet_layout.h"
+#include "sheet/sheet_layout.h"
 #include "image/ttf_text.h"
 
 namespace glimmer {

@@ -16,7 +16,7 @@
 
 #include "image/image.h"
 #include "image/test_images.h"
-#include "reference/superblur_reference.h"
+#include "bloom/superblur_reference.h"
 
 namespace glimmer::calibration {
 

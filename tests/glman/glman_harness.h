@@ -6,7 +6,7 @@
 #include <memory>
 #include <string>
 
-#include "driver/prepare_script.h"
+#include "pipeline/prepare_script.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "image/image.h"

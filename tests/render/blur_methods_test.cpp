@@ -10,7 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "bloom/blur_methods.h"
-#include "reference/metrics.h"
+#include "metrics/metrics.h"
 #include "render_harness.h"
 
 namespace fs = std::filesystem;

@@ -8,7 +8,7 @@
 
 #include <gtest/gtest.h>
 
-#include "driver/numeric_health.h"
+#include "pipeline/numeric_health.h"
 #include "image/test_images.h"
 #include "render_harness.h"
 

@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "driver/prepare_script.h"
+#include "pipeline/prepare_script.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
 #include "image/image.h"

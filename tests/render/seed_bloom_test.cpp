@@ -5,7 +5,7 @@
 // calibration scene for the superblur.
 #include <gtest/gtest.h>
 
-#include "reference/superblur_reference.h"
+#include "bloom/superblur_reference.h"
 #include "render_harness.h"
 
 using namespace glimmer;

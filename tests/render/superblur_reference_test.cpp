@@ -12,7 +12,7 @@
 #include <gtest/gtest.h>
 
 #include "image/test_images.h"
-#include "reference/superblur_reference.h"
+#include "bloom/superblur_reference.h"
 #include "render_harness.h"
 
 namespace fs = std::filesystem;

@@ -105,6 +105,12 @@ TEST(ViewCommands, ParsesEveryCommand) {
     EXPECT_TRUE(probe->report);
     EXPECT_FALSE(parseViewCommand("probe on", err)->report);
     EXPECT_FALSE(parseViewCommand("probe off", err)->on);
+    auto at = parseViewCommand("probe 100 200", err);  // a pixel of the picture, not the pointer's
+    ASSERT_TRUE(at) << err;
+    EXPECT_TRUE(at->report);
+    EXPECT_EQ(at->x, 100);
+    EXPECT_EQ(at->y, 200);
+    EXPECT_EQ(parseViewCommand("probe", err)->x, -1);
     auto split = parseViewCommand("split 6 screen", err);
     ASSERT_TRUE(split) << err;
     EXPECT_EQ(split->kind, ViewCommand::Kind::Split);
@@ -128,8 +134,10 @@ TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     EXPECT_EQ(err, "show: '40' is not a texture unit (0 to 31) or 'screen'");
     EXPECT_FALSE(parseViewCommand("values maybe", err));
     EXPECT_EQ(err, "usage: values on|off");
-    EXPECT_FALSE(parseViewCommand("probe 3", err));
-    EXPECT_EQ(err, "usage: probe [on|off]");
+    for (const char* bad : {"probe 3", "probe 1 -2", "probe 1.5 2", "probe 1 2 3", "probe 16384 0", "probe a b"}) {
+        EXPECT_FALSE(parseViewCommand(bad, err)) << bad;
+        EXPECT_EQ(err, "usage: probe [on|off], or probe X Y (a pixel of the picture, top left 0 0)") << bad;
+    }
     EXPECT_FALSE(parseViewCommand("scale 9", err));
     EXPECT_EQ(err, "scale: '9' is not a number from 0.5 to 4");
     EXPECT_FALSE(parseViewCommand("scale", err));

@@ -129,6 +129,7 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
   const viewValue = glimmer.cwrap("glimmer_view_value", "string", ["string"]);
   const viewControl = glimmer.cwrap("glimmer_view_control", "string", ["string"]);
   const viewDrawn = glimmer.cwrap("glimmer_view_drawn", "string", []);
+  const viewCommand = glimmer.cwrap("glimmer_view_command", "string", ["string"]);
   const select = document.getElementById("script");
   const verdict = document.getElementById("verdict");
   const shown = document.getElementById("diagnostics");
@@ -392,6 +393,14 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
     control: (name) => viewControl(name).split(" ").filter(Boolean).map(Number),
     drawn: () => viewDrawn(),
     probe: () => glimmer.UTF8ToString(glimmer._glimmer_view_probe()),
+    // One of `glimmer view`'s commands (set, show, values, probe X Y, split,
+    // save, frames...) through the same viewer core; what the window would
+    // print for it. A save keeps the picture for Save PNG (and snapshot()).
+    command: (line) => {
+      const said = viewCommand(line);
+      if (said.startsWith("saved ")) keepPicture();
+      return said;
+    },
     errors: () => glimmer._glimmer_view_errors(),
     snapshot: () => { if (glimmer._glimmer_view_snapshot()) keepPicture(); return picture.dataset.png || ""; },
     readFile: (path) => FS.readFile(path, { encoding: "utf8" }),
