@@ -16,6 +16,7 @@ packages=(
   libglm-dev libstb-dev libfmt-dev libcli11-dev libtinyobjloader-dev libtinyexr-dev libpng-dev
   libwebp-dev                         # render --frames: animated WebP (WebPAnimEncoder/Decoder)
   libzip-dev                          # batch --reference: students' zips, unpacked safely (src/grade/safe_unzip.h)
+  nlohmann-json3-dev                  # every JSON written and read: batch's report, grades.jsonl, tradeoff (src/util/json.h)
   fonts-dejavu-core                   # labels of sheets and charts (DejaVu Sans through stb_truetype)
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   glslang-dev glslang-tools           # the translation for WebGL 2: desktop GLSL -> SPIR-V (src/shader/web_translate.h)
@@ -27,7 +28,7 @@ test_packages=(
   clang-14 libclang-rt-14-dev         # libFuzzer targets and sanitizers (tools/fuzz-ci.sh)
   x11-apps                            # xwd: the viewer test reads the X screen back
   xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
-  emscripten chromium                 # the browser build (src/web) and its headless test (tools/test-web.sh)
+  emscripten chromium                 # the browser build (src/web) and its headless tests (tests/web/)
   node-ws                             # the page driven over the DevTools protocol (tools/cdp-page.mjs)
   libjs-codemirror                    # the page's code editor (CodeMirror 5, src/web/page/glimmer-editor.js)
   python3-fonttools                   # the page's panel fonts cut to Latin-1 (src/web/CMakeLists.txt)

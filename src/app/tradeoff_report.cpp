@@ -7,15 +7,10 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include "util/json.h"
 #include "util/write_file.h"
 
 namespace glimmer {
-namespace {
-
-std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
-
-}  // namespace
-
 void printTradeoffTable(const std::vector<TradeoffRow>& rows) {
     fmt::print("{:<16}{:>6}{:>9}{:>9}{:>9}{:>9}{:>8}{:>10}{:>8} | {:>10}{:>9}{:>10}{:>9} | {:>10}{:>9}{:>10}{:>9} | {:>6}\n",
                "method", "taps", "ms", "min", "max", "floor", "min/flr", "MB moved", "sigma", "num RMSE", "num PSNR",
@@ -75,31 +70,36 @@ void writeTradeoffCsv(const std::string& path, const std::vector<TradeoffRow>& r
 
 void writeTradeoffJson(const std::string& path, const std::string& title, const std::vector<TradeoffRow>& rows,
                        const FastestVerdict& verdict, double matchSigma) {
-    std::ostringstream json;
-    json << "{\n  \"title\": \"" << title << "\",\n  \"comparison\": "
-         << (matchSigma > 0 ? fmt::format("{{\"matched_sigma\": {}}}", jsonNumber(matchSigma)) : "\"natural width\"")
-         << ",\n  \"fastest_within_40db\": {\"clear_winner\": " << (verdict.clearWinner() ? "true" : "false")
-         << ", \"methods\": [";
-    for (size_t i = 0; i < verdict.names.size(); ++i) json << (i ? ", " : "") << "\"" << verdict.names[i] << "\"";
-    json << "]},\n  \"methods\": [\n";
-    for (size_t i = 0; i < rows.size(); ++i) {
-        const TradeoffRow& r = rows[i];
-        json << fmt::format("    {{\"method\": \"{}\", \"family\": \"{}\", \"taps\": {}, \"passes\": {}, \"ms\": {}, "
-                            "\"ms_min\": {}, \"ms_max\": {}, \"runs\": {}, \"floor_ms\": {}, "
-                            "\"megabytes\": {}, \"sigma\": {}, \"numerical\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
-                            "\"over_one_step\": {}}}, \"model\": {{\"rmse\": {}, \"psnr\": {}, \"max\": {}, "
-                            "\"over_one_step\": {}}}, \"health\": {{\"nan\": {}, \"inf\": {}, \"negative\": {}, "
-                            "\"above_65504\": {}}}}}{}\n",
-                            r.method->name, r.method->family, r.method->tapsPerPixel, r.method->passes,
-                            jsonNumber(r.ms), jsonNumber(r.time.min), jsonNumber(r.time.max), r.time.runs, jsonNumber(r.floorMs),
-                            jsonNumber(r.megabytes), jsonNumber(r.sigma), jsonNumber(r.numerical.rmse),
-                            jsonNumber(r.numerical.psnr), jsonNumber(r.numerical.maxAbs), r.numerical.pixelsOverOneStep,
-                            jsonNumber(r.model.rmse), jsonNumber(r.model.psnr), jsonNumber(r.model.maxAbs),
-                            r.model.pixelsOverOneStep, r.health.nan, r.health.inf, r.health.negative,
-                            r.health.above65504, i + 1 < rows.size() ? "," : "");
+    auto number = [](double v) { return jsonNumber(v, 6); };  // measurements: 6 digits, as the CSV
+    Json json;
+    json["title"] = title;
+    json["comparison"] = matchSigma > 0 ? Json{{"matched_sigma", number(matchSigma)}} : Json("natural width");
+    json["fastest_within_40db"] = {{"clear_winner", verdict.clearWinner()}, {"methods", verdict.names}};
+    json["methods"] = Json::array();
+    auto errors = [&](const ErrorStats& e) {
+        return Json{{"rmse", number(e.rmse)}, {"psnr", number(e.psnr)}, {"max", number(e.maxAbs)},
+                    {"over_one_step", e.pixelsOverOneStep}};
+    };
+    for (const TradeoffRow& r : rows) {
+        Json m;
+        m["method"] = r.method->name;
+        m["family"] = r.method->family;
+        m["taps"] = r.method->tapsPerPixel;
+        m["passes"] = r.method->passes;
+        m["ms"] = number(r.ms);
+        m["ms_min"] = number(r.time.min);
+        m["ms_max"] = number(r.time.max);
+        m["runs"] = r.time.runs;
+        m["floor_ms"] = number(r.floorMs);
+        m["megabytes"] = number(r.megabytes);
+        m["sigma"] = number(r.sigma);
+        m["numerical"] = errors(r.numerical);
+        m["model"] = errors(r.model);
+        m["health"] = {{"nan", r.health.nan}, {"inf", r.health.inf}, {"negative", r.health.negative},
+                       {"above_65504", r.health.above65504}};
+        json["methods"].push_back(m);
     }
-    json << "  ]\n}\n";
-    std::string error, text = json.str();
+    std::string error, text = jsonDocument(json);
     writeBytesReplacing(path, text.data(), text.size(), error);
 }
 

@@ -22,8 +22,9 @@ struct GradeRow {
     std::string solution;       // the solution's PNG at that setting
 };
 
-// One JSON object on one line; parseGradeRecord reads back exactly what
-// gradeRecord wrote (the fields above), and refuses anything else with `error`.
+// One JSON object on one line (util/json.h's rules: UTF-8, "inf" for an
+// infinite PSNR); parseGradeRecord reads back exactly what gradeRecord
+// wrote (the fields above), and refuses anything else with `error`.
 std::string gradeRecord(const GradeRow& row);
 bool parseGradeRecord(const std::string& line, GradeRow& row, std::string& error);
 

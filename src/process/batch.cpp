@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstring>
 #include <cstdio>
 #include <map>
@@ -23,6 +24,7 @@
 #include "pipeline/prepare_script.h"
 #include "image/image.h"
 #include "plan/uniform_values.h"
+#include "util/json.h"
 #include "util/numbers.h"
 
 namespace glimmer {
@@ -32,12 +34,18 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
+// One line of --report (util/json.h: how strings and numbers are written).
 std::string resultJson(const BatchJob& job, int exitCode, const std::string& diagnostics, const std::string& written,
                        double prepareMs, double renderMs, double writeMs, const std::string& health) {
-    return fmt::format("{{\"script\": {}, \"exit\": {}, \"output\": {}, \"diagnostics\": {}, "
-                       "\"ms\": {{\"prepare\": {:.2f}, \"render\": {:.2f}, \"write\": {:.2f}}}, \"health\": {}}}",
-                       jsonString(job.script), exitCode, written.empty() ? "null" : jsonString(written),
-                       jsonString(diagnostics), prepareMs, renderMs, writeMs, jsonString(health));
+    auto ms = [](double v) { return jsonNumber(std::round(v * 100) / 100); };  // to the hundredth, as before
+    Json line;
+    line["script"] = job.script;
+    line["exit"] = exitCode;
+    line["output"] = written.empty() ? Json(nullptr) : Json(written);
+    line["diagnostics"] = diagnostics;
+    line["ms"] = {{"prepare", ms(prepareMs)}, {"render", ms(renderMs)}, {"write", ms(writeMs)}};
+    line["health"] = health;
+    return jsonLine(line);
 }
 
 // Sets one "name=value" of a grading setting. A range takes the value even

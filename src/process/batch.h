@@ -16,8 +16,6 @@
 #include <string>
 #include <vector>
 
-#include "util/json_string.h"  // jsonString: the report lines' strings
-
 namespace glimmer {
 
 struct BatchJob {

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 #include "run_glimmer.h"
 
 namespace {
@@ -23,6 +25,13 @@ using glimmer_cli::writeRunawayScript;
 std::string readAll(const std::string& path) {
     std::ifstream f(path, std::ios::binary);
     return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+
+// One line of --report, read with a JSON library (an empty object when it
+// is not a JSON object: the checks on it then fail, saying the line).
+nlohmann::json reportLine(const std::string& line) {
+    nlohmann::json j = nlohmann::json::parse(line, nullptr, false);
+    return j.is_object() ? j : nlohmann::json::object();
 }
 
 std::vector<std::string> lines(const std::string& text) {
@@ -52,12 +61,17 @@ TEST(CliBatch, EachScriptIsRenderedOrReportedAndARunawayCostsOnlyItself) {
     EXPECT_EQ(r.exitCode, 1) << r.err;  // some scripts failed
     auto report = lines(readAll(dir.file("r.jsonl")));
     ASSERT_EQ(report.size(), 4u);  // one line per script, in the order given
-    EXPECT_NE(report[0].find("\"exit\": 0"), std::string::npos) << report[0];
-    EXPECT_NE(report[1].find("\"exit\": 1"), std::string::npos) << report[1];
-    EXPECT_NE(report[1].find("Ortho takes 4 numbers, got 3"), std::string::npos) << report[1];
-    EXPECT_NE(report[2].find("\"exit\": 1"), std::string::npos) << report[2];
-    EXPECT_NE(report[2].find("stopped after 2 s (--timeout 2)"), std::string::npos) << report[2];
-    EXPECT_NE(report[3].find("\"exit\": 0"), std::string::npos) << report[3];
+    EXPECT_EQ(reportLine(report[0]).value("exit", -1), 0) << report[0];
+    EXPECT_EQ(reportLine(report[0]).value("script", ""), good) << report[0];
+    EXPECT_EQ(reportLine(report[1]).value("exit", -1), 1) << report[1];
+    EXPECT_NE(reportLine(report[1]).value("diagnostics", "").find("Ortho takes 4 numbers, got 3"), std::string::npos)
+        << report[1];
+    EXPECT_TRUE(reportLine(report[1]).at("output").is_null()) << report[1];
+    EXPECT_EQ(reportLine(report[2]).value("exit", -1), 1) << report[2];
+    EXPECT_NE(reportLine(report[2]).value("diagnostics", "").find("stopped after 2 s (--timeout 2)"), std::string::npos)
+        << report[2];
+    EXPECT_EQ(reportLine(report[3]).value("exit", -1), 0) << report[3];
+    EXPECT_TRUE(reportLine(report[3]).at("ms").at("render").is_number()) << report[3];
     EXPECT_EQ(countOf(r.err, "wrote 2 of 4 scripts to "), 1) << r.err;
     // What batch wrote is what `glimmer render` writes for the same script.
     std::vector<std::string> pngs;
@@ -68,6 +82,24 @@ TEST(CliBatch, EachScriptIsRenderedOrReportedAndARunawayCostsOnlyItself) {
     int same = 0;
     for (const auto& p : pngs) same += readAll(p) == readAll(dir.file("good.png"));
     EXPECT_EQ(same, 1);
+}
+
+// Issue 25: a report line is JSON whatever bytes a path or a diagnostic
+// holds. A script named in Latin-1 (not UTF-8) was written into the line
+// byte for byte, which no JSON reader takes; now each bad byte is U+FFFD.
+TEST(CliBatch, AReportLineIsJsonWhenANameIsNotUtf8) {
+    TempDir dir;
+    const std::string latin1 = dir.file("J\xFCrgen.glib");  // Jürgen in Latin-1
+    std::ofstream(latin1) << "Ortho -1 1 -1\n";
+    auto r = runGlimmer({"batch", latin1, "-o", dir.file("out"), "--report", dir.file("r.jsonl"), "--size", "16x16",
+                         "--backend", "osmesa"}, 60);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    auto report = lines(readAll(dir.file("r.jsonl")));
+    ASSERT_EQ(report.size(), 1u);
+    const nlohmann::json line = reportLine(report[0]);
+    ASSERT_TRUE(line.is_object()) << report[0];
+    EXPECT_EQ(line.value("script", ""), dir.file("J\xEF\xBF\xBDrgen.glib")) << report[0];
+    EXPECT_NE(line.value("diagnostics", "").find("Ortho takes 4 numbers, got 3"), std::string::npos) << report[0];
 }
 
 TEST(CliBatch, ShardsPartitionTheListExactly) {

@@ -221,7 +221,7 @@ TEST(CliGrade, ResumeWithAnotherSolutionThresholdsOrSandboxIsRefused) {
     fs::create_directories(other);
     for (const char* f : {"rings.glib", "rings.frag", "st.vert"}) fs::copy_file(kSolution / f, other / f);
     const std::string header = readAll(out / "grading.txt"), records = readAll(out / "grades.jsonl");
-    ASSERT_NE(records.find("\"student\": \"ann\""), std::string::npos) << records;
+    ASSERT_NE(records.find("\"student\":\"ann\""), std::string::npos) << records;
     auto resume = [&](const std::vector<std::string>& extra) {
         auto v = gradeArgs(cls, out);
         v.push_back("--resume");

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "image/image.h"
 #include "run_glimmer.h"
@@ -34,10 +35,15 @@ TEST(CliTradeoff, WritesTableCsvJsonAndChart) {
     }
     EXPECT_EQ(rows, 3);
     std::ifstream json(dir.file("t.json"));
-    std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("\"method\": \"sep9 x2\""), std::string::npos);
-    EXPECT_NE(text.find("\"health\": {\"nan\": 0, \"inf\": 0, \"negative\": 0, \"above_65504\": 0}"), std::string::npos)
-        << text;
+    nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+    ASSERT_TRUE(doc.is_object()) << dir.file("t.json") << " is not JSON";
+    bool sep9x2 = false;
+    for (const auto& m : doc["methods"]) {
+        sep9x2 |= m["method"] == "sep9 x2";
+        EXPECT_EQ(m["health"], nlohmann::json::parse(R"({"nan": 0, "inf": 0, "negative": 0, "above_65504": 0})"))
+            << m.dump();
+    }
+    EXPECT_TRUE(sep9x2) << doc.dump(2);
     glimmer::Image chart;
     std::string why;
     ASSERT_TRUE(glimmer::loadImage(dir.file("t.png"), chart, why)) << why;
@@ -86,10 +92,12 @@ TEST(CliTradeoff, KeepsTheSpreadOfTheRuns) {
     ASSERT_EQ(floorPerTap.size(), 2u);
     EXPECT_NEAR(floorPerTap[0], floorPerTap[1], 1e-3 * floorPerTap[0]);
     std::ifstream json(dir.file("t.json"));
-    std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("\"comparison\": \"natural width\""), std::string::npos) << text;
-    EXPECT_NE(text.find("\"fastest_within_40db\": {\"clear_winner\": "), std::string::npos) << text;
-    EXPECT_NE(text.find("\"runs\": 3"), std::string::npos) << text;
+    nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+    ASSERT_TRUE(doc.is_object()) << dir.file("t.json") << " is not JSON";
+    EXPECT_EQ(doc["comparison"], "natural width") << doc.dump(2);
+    EXPECT_TRUE(doc["fastest_within_40db"]["clear_winner"].is_boolean()) << doc.dump(2);
+    ASSERT_EQ(doc["methods"].size(), 2u) << doc.dump(2);
+    for (const auto& m : doc["methods"]) EXPECT_EQ(m["runs"], 3) << m.dump();
 }
 
 // --match-sigma: one method per family, each near the target, and the
@@ -117,8 +125,9 @@ TEST(CliTradeoff, MatchSigmaScalesEachFamily) {
     }
     EXPECT_EQ(rows, 4);  // superblur, sep9, linear5, dual Kawase
     std::ifstream json(dir.file("m.json"));
-    std::string text((std::istreambuf_iterator<char>(json)), std::istreambuf_iterator<char>());
-    EXPECT_NE(text.find("\"comparison\": {\"matched_sigma\": 3}"), std::string::npos) << text;
+    nlohmann::json doc = nlohmann::json::parse(json, nullptr, false);
+    ASSERT_TRUE(doc.is_object()) << dir.file("m.json") << " is not JSON";
+    EXPECT_EQ(doc["comparison"], nlohmann::json::parse(R"({"matched_sigma": 3})")) << doc.dump(2);
 }
 
 TEST(CliTradeoff, MatchSigmaOutOfRangeIsAUsageError) {

@@ -41,10 +41,12 @@ TEST(GradeMerge, ALastLineCutOffByAKillIsDroppedAndOthersAreErrors) {
     EXPECT_EQ(rows[0].student, "alice");
     rows.clear();
     EXPECT_FALSE(parseRecords(b.substr(0, 20) + "\n" + a + "\n", "g.jsonl", rows, error));
-    EXPECT_EQ(error, "g.jsonl:1: error: expected a quoted key");
+    EXPECT_EQ(error, "g.jsonl:1: error: at column 21: syntax error while parsing object key - invalid string: "
+                     "missing closing quote; last read: '\"su'; expected string literal");
     rows.clear();  // a whole last line (it ends with a newline) was not cut off by a kill: an error
     EXPECT_FALSE(parseRecords(a + "\n" + b.substr(0, 20) + "\n", "g.jsonl", rows, error));
-    EXPECT_EQ(error, "g.jsonl:2: error: expected a quoted key");
+    EXPECT_EQ(error, "g.jsonl:2: error: at column 21: syntax error while parsing object key - invalid string: "
+                     "missing closing quote; last read: '\"su'; expected string literal");
     rows.clear();  // graded again after a resume: the later record stands
     ASSERT_TRUE(parseRecords(a + "\n" + gradeRecord(row("alice", 95)) + "\n", "g.jsonl", rows, error));
     ASSERT_EQ(rows.size(), 1u);

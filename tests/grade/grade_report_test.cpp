@@ -126,20 +126,90 @@ TEST(GradeReport, RecordsReadBackExactly) {
     EXPECT_TRUE(std::isinf(back.psnr));
     EXPECT_EQ(back.diagnostics, r.diagnostics);
     EXPECT_FALSE(parseGradeRecord(line.substr(0, line.size() / 2), back, error));
+    // The score as nlohmann writes it back (1e300: 1e+300).
     std::string huge = line;
-    huge.replace(huge.find("\"score\": 91"), 11, "\"score\": 1e300");
+    huge.replace(huge.find("\"score\":91"), 10, "\"score\": 1e300");
     EXPECT_FALSE(parseGradeRecord(huge, back, error));
-    EXPECT_EQ(error, "score '1e300' is not a whole number from 0 to 100");
+    EXPECT_EQ(error, "score '1e+300' is not a whole number from 0 to 100");
     EXPECT_FALSE(parseGradeRecord("{\"student\": \"x\"}", back, error));
     EXPECT_EQ(error, "no \"submission\"");
     std::string half = line;
-    half.replace(half.find("\"score\": 91"), 11, "\"score\": 91.5");
+    half.replace(half.find("\"score\":91"), 10, "\"score\": 91.5");
     EXPECT_FALSE(parseGradeRecord(half, back, error));
     EXPECT_EQ(error, "score '91.5' is not a whole number from 0 to 100");
+    std::string quoted = line;
+    quoted.replace(quoted.find("\"score\":91"), 10, "\"score\": \"91\"");
+    EXPECT_FALSE(parseGradeRecord(quoted, back, error));
+    EXPECT_EQ(error, "score '\"91\"' is not a whole number from 0 to 100");
     std::string maybe = line;
-    maybe.replace(maybe.find("\"verdict\": \"look\""), 17, "\"verdict\": \"maybe\"");
+    maybe.replace(maybe.find("\"verdict\":\"look\""), 16, "\"verdict\": \"maybe\"");
     EXPECT_FALSE(parseGradeRecord(maybe, back, error));
     EXPECT_EQ(error, "verdict 'maybe' is not pass, look, wrong or error");
+    std::string word = line;
+    word.replace(word.find("\"ssim\":0.912345"), 15, "\"ssim\": \"high\"");
+    EXPECT_FALSE(parseGradeRecord(word, back, error));
+    EXPECT_EQ(error, "\"ssim\": \"high\" is not a number");
+    EXPECT_FALSE(parseGradeRecord("[1, 2]", back, error));
+    EXPECT_EQ(error, "not a JSON object");
+}
+
+// Issue 25: a record is JSON read by a JSON library. A name written with a
+// \u escape (by jq, Python's json.dump, a person) reads back as UTF-8; the
+// hand-made reader made each escape one byte ("J\xFCrgen", not UTF-8).
+TEST(GradeReport, UnicodeEscapesInARecordReadBackAsUtf8) {
+    const std::string line =
+        R"({"student": "J\u00fcrgen", "submission": "class/j\u00fcrgen.zip", "script": "", "verdict": "error", )"
+        R"("score": 0, "ssim": 0, "psnr": 0, "worst_setting": "", "by_setting": "", "notes": "\u674e\u96f7 \ud83d\ude00", )"
+        R"("diagnostics": "", "seconds": 0, "picture": "", "solution": ""})";
+    GradeRow back;
+    std::string error;
+    ASSERT_TRUE(parseGradeRecord(line, back, error)) << error;
+    EXPECT_EQ(back.student, "J\xC3\xBCrgen");  // Jürgen
+    EXPECT_EQ(back.submission, "class/j\xC3\xBCrgen.zip");
+    EXPECT_EQ(back.notes, "\xE6\x9D\x8E\xE9\x9B\xB7 \xF0\x9F\x98\x80");  // 李雷 and an emoji (a surrogate pair)
+    // Written back as UTF-8, not as escapes.
+    EXPECT_NE(gradeRecord(back).find("\"student\":\"J\xC3\xBCrgen\""), std::string::npos) << gradeRecord(back);
+}
+
+// The one rule for numbers JSON lacks (util/json.h): "nan", "inf", "-inf",
+// read back as the same values, so --resume keeps them.
+TEST(GradeReport, NonFiniteNumbersInARecordReadBack) {
+    GradeRow r = row("ann", "error", 0);
+    r.ssim = NAN;
+    r.psnr = -INFINITY;
+    r.seconds = INFINITY;
+    const std::string line = gradeRecord(r);
+    EXPECT_NE(line.find(R"("ssim":"nan","psnr":"-inf")"), std::string::npos) << line;
+    EXPECT_NE(line.find(R"("seconds":"inf")"), std::string::npos) << line;
+    GradeRow back;
+    std::string error;
+    ASSERT_TRUE(parseGradeRecord(line, back, error)) << error;
+    EXPECT_TRUE(std::isnan(back.ssim));
+    EXPECT_EQ(back.psnr, -INFINITY);
+    EXPECT_EQ(back.seconds, INFINITY);
+    EXPECT_EQ(gradeRecord(back), line);
+}
+
+// A path or a diagnostic quoting a Latin-1 source line is not UTF-8: the
+// record is still JSON (each bad byte U+FFFD), never an exception, and it
+// reads back.
+TEST(GradeReport, TextThatIsNotUtf8StillMakesARecord) {
+    GradeRow r = row("ann", "error", 0);
+    r.submission = "class/J\xFCrgen";
+    r.diagnostics = "a.glib:1:7: error: unknown command 'Gr\xFC\xDF'\n  Color Gr\xFC\xDF\n        ^\n";
+    std::string line;
+    ASSERT_NO_THROW(line = gradeRecord(r));
+    EXPECT_NE(line.find("\"submission\":\"class/J\xEF\xBF\xBDrgen\""), std::string::npos) << line;
+    GradeRow back;
+    std::string error;
+    ASSERT_TRUE(parseGradeRecord(line, back, error)) << error;
+    EXPECT_EQ(back.diagnostics, "a.glib:1:7: error: unknown command 'Gr\xEF\xBF\xBD\xEF\xBF\xBD'\n  Color "
+                                "Gr\xEF\xBF\xBD\xEF\xBF\xBD\n        ^\n");
+    EXPECT_EQ(gradeRecord(back), line);
+    // Raw bytes that are not UTF-8 in a record file (a person's edit, an
+    // older Glimmer): an error for the line, not a crash.
+    EXPECT_FALSE(parseGradeRecord("{\"student\": \"J\xFCrgen\"}", back, error));
+    EXPECT_NE(error.find("ill-formed UTF-8"), std::string::npos) << error;
 }
 
 // Issue 29: an error row says which error, not one ERROR for all.
