@@ -45,6 +45,8 @@ void addCheckCommand(CLI::App& app, CheckOptions& o) {
     addCommon(sub, o);
     sub->add_flag("--web", o.web, "instead, translate every shader to GLSL ES 3.00 for WebGL 2 (no OpenGL needed): "
                                   "will the script run in the browser?");
+    sub->add_flag("--list-inputs", o.listInputs, "after a check without errors, print every file the script reads, "
+                                                 "one a line (tools/web_lesson.py packs these)");
 }
 
 void addViewCommand(CLI::App& app, ViewOptions& o) {

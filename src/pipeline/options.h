@@ -27,6 +27,7 @@ struct CommonOptions {
 // glimmer check: --web translates every shader for WebGL 2 instead of compiling on a context.
 struct CheckOptions : CommonOptions {
     bool web = false;
+    bool listInputs = false;  // --list-inputs: after a clean check, every file the script reads on stdout
 };
 
 struct RenderOptions : CommonOptions {

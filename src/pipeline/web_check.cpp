@@ -6,6 +6,7 @@
 
 #include "pipeline/prepare_script.h"
 #include "gl/shader_build.h"
+#include "plan/inputs.h"
 #include "plan/uniform_values.h"
 #include "shader/web_stage.h"
 
@@ -43,7 +44,7 @@ bool checkProgramsForWeb(const LoadedScript& script, Diagnostics& diags) {
     return diags.errorCount() == errorsBefore;
 }
 
-int runWebCheck(const CommonOptions& o) {
+int runWebCheck(const CommonOptions& o, std::ostream* inputs) {
     Diagnostics diags;
     LoadedScript loaded;
     PlanOptions planOptions;
@@ -76,7 +77,10 @@ int runWebCheck(const CommonOptions& o) {
     bool filesOk = loadFiles(loaded, true, diags);
     bool translated = checkProgramsForWeb(loaded, diags);
     printDiagnostics(diags, loaded.sources, std::cerr);
-    return filesOk && translated ? kExitOk : kExitScriptError;
+    if (!filesOk || !translated) return kExitScriptError;
+    if (inputs)
+        for (const PlanInput& in : inputsOf(loaded.plan)) *inputs << in.path << "\n";
+    return kExitOk;
 }
 
 }  // namespace glimmer

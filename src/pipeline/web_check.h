@@ -2,6 +2,8 @@
 // Program's stages translated to GLSL ES 3.00 (shader/web_translate.h), on
 // the CPU, with no OpenGL context: a teacher asks before class.
 #pragma once
+#include <iosfwd>
+
 #include "pipeline/load_script.h"
 #include "pipeline/options.h"
 
@@ -14,6 +16,8 @@ namespace glimmer {
 bool checkProgramsForWeb(const LoadedScript& script, Diagnostics& diags);
 
 // The whole command: load, plan, read files, translate, print. The exit code.
-int runWebCheck(const CommonOptions& options);
+// `inputs`: where to list every file the script reads after a clean check
+// (check --list-inputs), or null.
+int runWebCheck(const CommonOptions& options, std::ostream* inputs = nullptr);
 
 }  // namespace glimmer

@@ -2,6 +2,8 @@
 
 #include <sys/stat.h>
 
+#include "plan/inputs.h"
+
 namespace glimmer {
 namespace {
 
@@ -15,17 +17,8 @@ bool sameFile(const struct stat& a, const std::string& path) {
 std::string inputOverwrittenBy(const Plan& plan, const std::string& output) {
     struct stat out{};
     if (output.empty() || ::stat(output.c_str(), &out) != 0 || !S_ISREG(out.st_mode)) return {};  // nothing there to lose
-    if (sameFile(out, plan.scriptFile)) return plan.scriptFile;
-    for (const auto& t : plan.textures) {
-        if (sameFile(out, t.path)) return t.shown;
-        for (size_t k = 0; k < t.facePaths.size(); ++k)
-            if (sameFile(out, t.facePaths[k])) return k < t.faceShown.size() ? t.faceShown[k] : t.facePaths[k];
-    }
-    for (const auto& p : plan.programs)
-        for (const auto& stage : p.stages)
-            if (sameFile(out, stage.path)) return stage.shown;
-    for (const auto& m : plan.meshes)
-        if (sameFile(out, m.path)) return m.path;
+    for (const PlanInput& in : inputsOf(plan))
+        if (sameFile(out, in.path)) return in.shown;
     return {};
 }
 

@@ -32,6 +32,26 @@ std::pair<int, std::string> lineStarting(const std::string& path, const std::str
     return {0, ""};
 }
 
+// --list-inputs: after a clean check, every file the script reads, once
+// each, in the order it names them (the lesson packer packs these); with
+// an error, nothing (a lesson must not carry a script that fails). The
+// same with and without --web.
+TEST(CliWebCheck, ListInputsNamesEveryFileTheScriptReads) {
+    const std::string want = "scripts/bloom.glib\ntextures/grid.bmp\nshaders/superblur.vert\nshaders/superblur.frag\n"
+                             "shaders/bloom.vert\nshaders/bloom.frag\n";
+    for (bool web : {true, false}) {
+        std::vector<std::string> args = {"check", "--list-inputs", "scripts/bloom.glib"};
+        if (web) args.insert(args.begin() + 1, "--web");
+        if (!web) args.insert(args.begin() + 1, {"--backend", "osmesa"});
+        auto r = runGlimmer(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(r.out, want) << (web ? "--web" : "osmesa");
+    }
+    auto broken = runGlimmer({"check", "--web", "--list-inputs", webData("broken.glib")});
+    EXPECT_EQ(broken.exitCode, 1);
+    EXPECT_EQ(broken.out, "");
+}
+
 // Every Program of the seed scripts translates, and the translation adds
 // no message of its own: the web check says exactly what the desktop check
 // on a real context says (the script's own warnings), nothing more.

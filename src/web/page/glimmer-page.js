@@ -34,6 +34,9 @@ const kMaxUserBytes = 256 * 1024 * 1024;
 // --static folder names lesson.json in <meta name="glimmer-lesson">.
 // base64 of kMaxUserBytes and room for the names.
 const kMaxLessonText = Math.ceil(kMaxUserBytes / 3) * 4 + kMaxUserFiles * 4096;
+// A packed lesson holds at most the packer's 64 MiB of files (web_lesson.py's
+// LIMIT): its gzip block may not inflate past their base64 and names.
+const kMaxPackedLessonText = Math.ceil((64 * 1024 * 1024) / 3) * 4 + kMaxUserFiles * 1024;
 const refusal = (why) => Object.assign(new Error(why), { refusal: true });
 const shownUrl = (text) => JSON.stringify(text.length > 80 ? text.slice(0, 80) + "..." : text);
 const lessonUrlChecked = (text) => {
@@ -88,7 +91,11 @@ const parseLesson = (text, where) => {
   const files = entries.map(([path, data]) => {
     try { return [path, base64Bytes(data)]; } catch { throw refusal("refused: the file " + JSON.stringify(path) + " of " + where + " is not base64"); }
   });
-  return { name: typeof lesson.name === "string" ? lesson.name.slice(0, 200) : "", files };
+  // The packer lists the lesson's scripts (each once, in its order); a
+  // lesson without the list shows every script it holds.
+  const scripts = Array.isArray(lesson.scripts)
+    ? lesson.scripts.filter((s) => typeof s === "string" && Object.hasOwn(lesson.files, s)).slice(0, kMaxUserFiles) : null;
+  return { name: typeof lesson.name === "string" ? lesson.name.slice(0, 200) : "", files, scripts };
 };
 
 // A packed lesson (tools/web_lesson.py pack) carries its files and the
@@ -100,6 +107,31 @@ const dataBlock = (id) => {
   return block && block.tagName === "SCRIPT" && block.type !== "" && !/javascript|module/i.test(block.type) ? block : null;
 };
 const packedLesson = dataBlock("glimmer-lesson");
+// A packed page's data blocks are base64 of gzip ("application/gzip": the
+// packer compresses the module and the lesson, 8.5 MB down to under 3) and
+// the browser undoes it natively (DecompressionStream), stopping at `limit`
+// bytes so a hostile block cannot inflate without bound. Older packs wrote
+// plain blocks: those are read as they are.
+const gunzip = async (bytes, limit) => {
+  if (typeof DecompressionStream === "undefined")
+    throw refusal("refused: this browser cannot unpack the packed lesson (no DecompressionStream): use a current browser");
+  const reader = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip")).getReader();
+  const chunks = [];
+  let size = 0;
+  for (let r = await reader.read(); !r.done; r = await reader.read()) {
+    size += r.value.length;
+    if (size > limit) { reader.cancel(); throw refusal("refused: the packed lesson is larger than a lesson may be"); }
+    chunks.push(r.value);
+  }
+  const out = new Uint8Array(size);
+  let at = 0;
+  for (const c of chunks) { out.set(c, at); at += c.length; }
+  return out;
+};
+const blockBytes = (block, limit) =>
+  block.type === "application/gzip" ? gunzip(base64Bytes(block.textContent), limit) : Promise.resolve(base64Bytes(block.textContent));
+const blockText = async (block, limit) =>
+  block.type === "application/gzip" ? new TextDecoder().decode(await blockBytes(block, limit)) : block.textContent;
 const lessonMeta = document.querySelector('meta[name="glimmer-lesson"]');
 const lessonUrl = query.has("lesson") ? query.get("lesson") : lessonMeta ? lessonMeta.content : null;
 // Resolves to { lesson } (null: none) or { refused: reason }.
@@ -108,11 +140,13 @@ const lessonLoaded = (async () => {
     const url = lessonUrlChecked(lessonUrl);
     return parseLesson(await loadLessonText(url), "the lesson " + shownUrl(lessonUrl));
   }
-  return packedLesson ? parseLesson(packedLesson.textContent, "the packed lesson") : null;
+  return packedLesson ? parseLesson(await blockText(packedLesson, kMaxPackedLessonText), "the packed lesson") : null;
 })().then((lesson) => ({ lesson }), (e) => ({ refused: e.refusal ? e.message : "refused: the lesson: " + e }));
 const packedWasm = dataBlock("glimmer-wasm");
-const moduleOptions = packedWasm ? { wasmBinary: base64Bytes(packedWasm.textContent) } : {};
-Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded]) => {
+const kMaxWasmBytes = 64 * 1024 * 1024;
+const moduleOptions = packedWasm ? blockBytes(packedWasm, kMaxWasmBytes).then((bytes) => ({ wasmBinary: bytes }))
+                                 : Promise.resolve({});
+Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, loaded]) => {
   // Since the page began to load: the module fetched, compiled and started
   // (PERFORMANCE.md splits the first picture's time at this mark).
   document.body.dataset.moduleReadyMs = performance.now().toFixed(0);
@@ -157,7 +191,7 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
   const listScripts = () => {
     select.length = 0;
     for (const root of lesson ? ["/user"] : ["/user", "/lesson"])
-      for (const s of scriptsUnder(root))
+      for (const s of root === "/user" && lesson && lesson.scripts ? lesson.scripts : scriptsUnder(root))
         if (root === "/user" || !s.startsWith("tests/"))
           select.add(new Option((root === "/user" ? "yours: " : "") + s, root + ":" + s));
   };
@@ -417,6 +451,7 @@ Promise.all([createGlimmer(moduleOptions), lessonLoaded]).then(([glimmer, loaded
       if (files.length > kMaxUserFiles) break;
       files.push([path, new Uint8Array(await file.arrayBuffer())]);
     }
+    if (lesson) lesson.scripts = null;  // the picked folder's scripts are listed now, not the lesson's
     const why = mountUser(files);
     if (why) { refuse(why); return; }
     folderHandle = handle;
