@@ -4,6 +4,7 @@
 // arrives, and written at once: a record line (what --resume and
 // batch-merge read back), then the page and the CSV, rewritten at most
 // every two seconds and at the end (app/grade_report_files.cpp).
+#include <array>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -53,6 +54,55 @@ std::string failureNote(const std::string& diagnostics) {
     if (diagnostics.find("crashed") != std::string::npos) return "the renderer crashed";
     if (diagnostics.find("sandbox") != std::string::npos) return "reads files outside its folder";
     return "does not render";
+}
+
+// The submission's sliders against the solution's ("NAME MIN DEFAULT MAX"
+// each, process/batch.h): a range or a default the student changed is said
+// in the row, whatever the pictures (issue 29: `<0 1 2>` against `<0 1 4>`
+// went unmentioned). Sliders the submission lacks are judge()'s.
+std::string sliderDifferences(const std::vector<std::string>& student, const std::vector<std::string>& solution) {
+    std::map<std::string, std::string> theirs;
+    for (const auto& line : student) theirs[line.substr(0, line.find(' '))] = line;
+    std::string out;
+    for (const auto& line : solution) {
+        const std::string name = line.substr(0, line.find(' '));
+        auto it = theirs.find(name);
+        if (it == theirs.end() || it->second == line) continue;
+        auto numbers = [](const std::string& l) {  // MIN DEFAULT MAX, as the worker wrote them
+            std::istringstream in(l.substr(l.find(' ') + 1));
+            std::string a, b, c;
+            in >> a >> b >> c;
+            return std::array<std::string, 3>{a, b, c};
+        };
+        auto s = numbers(it->second), r = numbers(line);
+        if (s[0] != r[0] || s[2] != r[2])
+            out += fmt::format("{}{}: range <{} {}> (the solution's <{} {}>)", out.empty() ? "" : "; ", name, s[0], s[2],
+                               r[0], r[2]);
+        if (s[1] != r[1])
+            out += fmt::format("{}{}: default {} (the solution's {})", out.empty() ? "" : "; ", name, s[1], r[1]);
+    }
+    return out;
+}
+
+// The time each submission may take when the teacher gives no --timeout:
+// per setting the larger of kFloorSeconds and kTimesSolution times the
+// solution's own time at that setting, measured in this run on this machine
+// (so a loaded machine slows both alike), and as much again for preparing
+// (issue 29: a correct blur took 11.8 s on a loaded machine).
+constexpr double kFloorSeconds = 10, kTimesSolution = 20;
+double gradingTimeLimit(const BatchResult& solution, std::string& how) {
+    double total = std::max(kFloorSeconds, kTimesSolution * solution.prepareMs / 1000);
+    std::string each;
+    for (double ms : solution.settingMs) {
+        const double limit = std::max(kFloorSeconds, kTimesSolution * ms / 1000);
+        total += limit;
+        each += fmt::format("{}{:.0f}", each.empty() ? "" : ", ", limit);
+    }
+    how = fmt::format("each submission may take {:.0f} s: per setting the larger of {:g} s and {:g} x the "
+                      "solution's own time there ({} s), and the same for preparing ({:.0f} s); --timeout sets "
+                      "another", total, kFloorSeconds, kTimesSolution, each,
+                      std::max(kFloorSeconds, kTimesSolution * solution.prepareMs / 1000));
+    return total;
 }
 
 // Unique file stems for the students' pictures ("alice", "alice-2", ...).
@@ -189,6 +239,12 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                                  solved[0].missing[0], o.reference);
         return kExitUsage;
     }
+    BatchSettings studentSettings = base;
+    if (studentSettings.timeoutSeconds <= 0) {  // on by default when grading
+        std::string how;
+        studentSettings.timeoutSeconds = gradingTimeLimit(solved[0], how);
+        std::cerr << "glimmer: grading: " << how << "\n";
+    }
     std::vector<Image> solutionPictures(settings.size());
     for (size_t k = 0; k < settings.size(); ++k) {
         std::string why;
@@ -239,14 +295,16 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         }
         // The submission's folder is readable too: the sandbox is the submission, not only the script's folder.
         BatchJob job{script, "", settings, {}, {folder}};
-        for (size_t k = 0; k < settings.size(); ++k)
+        for (size_t k = 0; k < settings.size(); ++k) {
             job.outputs.push_back((pictures / fmt::format("{}-{}.png", stems[i], k)).string());
+            fs::remove(job.outputs.back(), ec);  // what is there after a stop is this run's: where it stopped
+        }
         jobs.push_back(job);
         jobStudent.push_back(i);
     }
 
     Progress progress;
-    runBatch(jobs, base, [&](size_t done, size_t total) { progress.update(fmt::format("batch: {}/{} graded", done, total)); },
+    runBatch(jobs, studentSettings, [&](size_t done, size_t total) { progress.update(fmt::format("batch: {}/{} graded", done, total)); },
              [&](size_t j, const BatchResult& result) {
                  const size_t i = jobStudent[j];
                  GradeRow r;
@@ -258,6 +316,14 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                  if (result.written.size() != settings.size()) {
                      r.verdict = "error";
                      r.notes = failureNote(result.diagnostics);
+                     if (r.notes == "timed out" || r.notes == "the renderer crashed") {
+                         // The pictures are written in order: the first missing one is where it stopped.
+                         size_t k = 0;
+                         while (k < settings.size() && fs::exists(jobs[j].outputs[k], ec)) ++k;
+                         r.notes += k < settings.size() ? fmt::format(" at setting {} ({} of {})", settingLabel(settings[k]),
+                                                                      k + 1, settings.size())
+                                                        : " after its last setting";
+                     }
                      keep(r);
                      return;
                  }
@@ -279,6 +345,8 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                  for (size_t k = 0; k < settings.size(); ++k)
                      r.bySetting += fmt::format("{}{} {:.3f}", k ? " · " : "", settingLabel(settings[k]),
                                                 comparisons[k].ssim);
+                 if (std::string changed = sliderDifferences(result.sliders, solved[0].sliders); !changed.empty())
+                     r.notes += (r.notes.empty() ? "" : "; ") + changed;
                  r.picture = fs::relative(result.written[worst], out, ec).string();
                  r.solution = fs::relative(solutionJob.outputs[worst], out, ec).string();
                  keep(r);

@@ -90,6 +90,30 @@ Comparison comparePictures(const Image& student, const Image& solution) {
     c.psnr = compare(rgbOf(student), rgbOf(solution)).psnr;
     c.ssim = ssim(luma(student), luma(solution), student.width, student.height, 8);
     c.blank = oneColour(student) && !oneColour(solution);
+    // The local measures: pixels clearly off, and the worst tile.
+    size_t off = 0;
+    const size_t n = size_t(student.width) * size_t(student.height);
+    for (size_t t = 0; t < n; ++t)
+        for (size_t ch = 0; ch < 3; ++ch)
+            if (std::abs(int(student.u8[t * 4 + ch]) - int(solution.u8[t * 4 + ch])) > kLocalLevels) {
+                ++off;
+                break;
+            }
+    c.offShare = double(off) / double(n);
+    const std::vector<double> ls = luma(student), lr = luma(solution);
+    c.worstTile = 1;
+    for (int ty = 0; ty < student.height; ty += kTileSide)
+        for (int tx = 0; tx < student.width; tx += kTileSide) {
+            const int w = std::min(kTileSide, student.width - tx), h = std::min(kTileSide, student.height - ty);
+            std::vector<double> a(size_t(w) * size_t(h)), b(a.size());
+            for (int y = 0; y < h; ++y)
+                for (int x = 0; x < w; ++x) {
+                    const size_t from = size_t(ty + y) * size_t(student.width) + size_t(tx + x);
+                    a[size_t(y) * size_t(w) + size_t(x)] = ls[from];
+                    b[size_t(y) * size_t(w) + size_t(x)] = lr[from];
+                }
+            c.worstTile = std::min(c.worstTile, ssim(a, b, w, h, 8));
+        }
     return c;
 }
 
@@ -136,11 +160,15 @@ Verdict judge(const std::vector<Comparison>& perSetting, const std::vector<std::
     }
     double minPsnr = std::numeric_limits<double>::infinity();
     bool blank = false;
+    size_t mostOff = 0, worstTile = 0;
     for (size_t k = 0; k < perSetting.size(); ++k) {
         if (perSetting[k].ssim < perSetting[worst].ssim) worst = k;
+        if (perSetting[k].offShare > perSetting[mostOff].offShare) mostOff = k;
+        if (perSetting[k].worstTile < perSetting[worstTile].worstTile) worstTile = k;
         minPsnr = std::min(minPsnr, perSetting[k].psnr);
         blank |= perSetting[k].blank;
     }
+    const bool localError = perSetting[mostOff].offShare > t.passOffShare || perSetting[worstTile].worstTile < t.passTileSsim;
     const double minSsim = perSetting[worst].ssim;
     v.score = int(std::lround(100 * std::clamp(minSsim, 0.0, 1.0)));
     std::vector<std::string> notes;
@@ -150,7 +178,15 @@ Verdict judge(const std::vector<Comparison>& perSetting, const std::vector<std::
         for (const auto& m : missing) names += (names.empty() ? "" : ", ") + m;
         notes.push_back("lacks the solution's uniform" + std::string(missing.size() > 1 ? "s " : " ") + names);
     }
-    if (minSsim >= t.passSsim && minPsnr >= t.passPsnr) v.kind = missing.empty() ? "pass" : "look";
+    if (minSsim >= t.passSsim && minPsnr >= t.passPsnr && localError) {
+        // Alike on the whole, wrong in a place: a person looks (the worst setting shown is that one).
+        v.kind = "look";
+        worst = perSetting[mostOff].offShare > t.passOffShare ? mostOff : worstTile;
+        notes.push_back(fmt::format("a local error: {:.2f}% of the pixels off by more than {} levels, the worst "
+                                    "{}x{} tile at SSIM {:.3f}",
+                                    100 * perSetting[worst].offShare, kLocalLevels, kTileSide, kTileSide,
+                                    perSetting[worst].worstTile));
+    } else if (minSsim >= t.passSsim && minPsnr >= t.passPsnr) v.kind = missing.empty() ? "pass" : "look";
     else if (minSsim >= t.lookSsim && !blank) v.kind = "look";
     else v.kind = "wrong";
     if (v.kind != "pass" && notes.empty())

@@ -110,10 +110,17 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
         r.json = resultJson(job, 1, r.diagnostics, "", prepareMs, 0, 0, "unchecked");
         return r;
     }
+    r.prepareMs = prepareMs;
     if (!job.outputs.empty()) {  // grading: every setting on this one renderer
         auto t1 = Clock::now();
         Diagnostics setDiags;
+        std::set<std::string> seen;
+        for (const auto& program : loaded.plan.programs)
+            for (const auto& u : program.uniforms)
+                if (u.form == UniformSetting::Form::Range && !u.values.empty() && seen.insert(u.name).second)
+                    r.sliders.push_back(fmt::format("{} {:g} {:g} {:g}", u.name, u.min, u.values[0], u.max));
         for (size_t k = 0; k < job.settings.size() && k < job.outputs.size(); ++k) {
+            const auto settingStart = Clock::now();
             UniformValues values(loaded.plan);
             for (const auto& a : job.settings[k])
                 if (!applyGradingAssignment(loaded.plan, values, a, setDiags)) {
@@ -124,6 +131,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
             std::string why;
             if (writePng(job.outputs[k], renderer->readScreen(), why)) r.written.push_back(job.outputs[k]);
             else printed << "glimmer: error: " << why << "\n";
+            r.settingMs.push_back(msSince(settingStart));
         }
         printDiagnostics(setDiags, loaded.sources, printed);
         r.exitCode = r.written.size() == job.outputs.size() ? 0 : 1;
@@ -165,7 +173,10 @@ std::string encodeResult(const BatchResult& r) {
         return out;
     };
     std::string out;
-    for (const std::string& text : {r.json, r.diagnostics, join(r.written), join(r.missing)}) {
+    std::string times;
+    for (double ms : r.settingMs) times += (times.empty() ? "" : "\n") + formatDouble(ms);
+    times += (times.empty() ? "" : "\n") + formatDouble(r.prepareMs);  // the last line: the prepare's
+    for (const std::string& text : {r.json, r.diagnostics, join(r.written), join(r.missing), join(r.sliders), times}) {
         std::uint32_t n = std::uint32_t(text.size());
         out.append(reinterpret_cast<const char*>(&n), sizeof n);
         out += text;
@@ -192,12 +203,23 @@ bool decodeResult(const std::string& bytes, BatchResult& r) {
         for (std::string l; std::getline(in, l);) out.push_back(l);
         return out;
     };
-    std::string written, missing;
-    if (!text(r.json) || !text(r.diagnostics) || !text(written) || !text(missing) || at + sizeof r.ms != bytes.size())
+    std::string written, missing, sliders, times;
+    if (!text(r.json) || !text(r.diagnostics) || !text(written) || !text(missing) || !text(sliders) || !text(times) ||
+        at + sizeof r.ms != bytes.size())
         return false;
     std::memcpy(&r.ms, bytes.data() + at, sizeof r.ms);
     r.written = split(written);
     r.missing = split(missing);
+    r.sliders = split(sliders);
+    r.settingMs.clear();
+    for (const std::string& line : split(times)) {  // locale-independent both ways (util/numbers.h)
+        double ms = 0;
+        if (parseDouble(line.data(), line.data() + line.size(), ms).ec != std::errc{}) return false;
+        r.settingMs.push_back(ms);
+    }
+    if (r.settingMs.empty()) return false;
+    r.prepareMs = r.settingMs.back();
+    r.settingMs.pop_back();
     return true;
 }
 

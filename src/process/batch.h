@@ -53,6 +53,12 @@ struct BatchResult {
     std::string diagnostics;            // as printed (file:line:col: ..., the source line, a caret)
     std::vector<std::string> written;   // the PNGs written (outputs of a grading job, in order)
     std::vector<std::string> missing;   // uniforms a setting names that the script lacks
+    // Grading: the script's sliders, "NAME MIN DEFAULT MAX" each (compared
+    // with the solution's), and each setting's render and write in ms (the
+    // solution's set the time limits, app/grade_batch.cpp).
+    std::vector<std::string> sliders;
+    std::vector<double> settingMs;
+    double prepareMs = 0;
     double ms = 0;                      // prepare, render and write together
 };
 

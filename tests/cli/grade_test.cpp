@@ -139,7 +139,9 @@ TEST(CliGrade, EachKindOfSubmissionGetsItsVerdict) {
     EXPECT_EQ(verdict("broken"), "0,error,,");
     EXPECT_NE(rest("broken").find("rings.frag:7:12: error: syntax error"), std::string::npos) << rest("broken");
     EXPECT_EQ(verdict("slow"), "0,error,,");
-    EXPECT_EQ(rest("slow"), "timed out," + (cls / "slow" / "rings.glib").string() + ": error: stopped after 3 s (--timeout 3)");
+    // Where it stopped: the first setting whose picture it never wrote (issue 29).
+    EXPECT_EQ(rest("slow"), "timed out at setting defaults (1 of 5)," + (cls / "slow" / "rings.glib").string() +
+                                ": error: stopped after 3 s (--timeout 3)");
     {  // the time it ran before it was stopped, not 0.00 s (issue 29)
         std::istringstream csv(readAll(out / "grades.csv"));
         std::string line;
@@ -327,18 +329,72 @@ TEST(CliGrade, ASliderNarrowerThanTheSolutionsIsSetToTheSolutionsEnds) {
     const fs::path cls = dir.path() / "class";
     student(cls / "narrow", readAll(kSolution / "rings.frag"),
             replaced(readAll(kSolution / "rings.glib"), "uTint <0. 0.5 1.>", "uTint <0.25 0.5 0.75>"));
+    // Another default: said in the row too, whatever the pictures (issue 29).
+    student(cls / "otherdefault", readAll(kSolution / "rings.frag"),
+            replaced(readAll(kSolution / "rings.glib"), "uFreq <2. 6. 12.>", "uFreq <2. 5. 12.>"));
     fs::create_directories(cls / "results");  // -o inside the class, left from an earlier run: not a student
     auto r = runGlimmer(gradeArgs(cls, cls / "results"), 120);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     auto rows = csvRows(cls / "results" / "grades.csv");
-    EXPECT_EQ(rows.size(), 1u);
-    EXPECT_EQ(rows["narrow"], "100,pass,1.0000,inf|,");
+    EXPECT_EQ(rows.size(), 2u);
+    // Graded at the solution's values, and the narrower range said (issue 29).
+    EXPECT_EQ(rows["narrow"], "100,pass,1.0000,inf|uTint: range <0.25 0.75> (the solution's <0 1>),");
+    // (At "defaults" each script is drawn at its own defaults: another one is wrong there.)
+    EXPECT_NE(rows["otherdefault"].find("; uFreq: default 5 (the solution's 6)"), std::string::npos) << rows["otherdefault"];
     auto args = gradeArgs(cls, dir.path() / "typo");
     args.insert(args.end(), {"--vary", "uFrek=1,2"});
     auto typo = runGlimmer(args, 120);
     EXPECT_EQ(typo.exitCode, 2);
     EXPECT_EQ(typo.err, "glimmer: error: --vary uFrek: the solution " + (kSolution / "rings.glib").string() +
                             " has no uniform of that name\n");
+}
+
+// Alike on the whole, wrong in a place (issue 29): a 6x6 patch 0.3 brighter
+// in a corner of a 128x128 picture (0.2% of it) keeps SSIM and PSNR at a pass;
+// the local measures make it "look", said with where, and the right one
+// still passes.
+TEST(CliGrade, ALocalErrorIsLookedAtNotPassed) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class";
+    const std::string frag = readAll(kSolution / "rings.frag");
+    student(cls / "right", frag);
+    student(cls / "patch", replaced(frag, "    gl_FragColor = vec4(mix(cool, warm, ring) * (0.5 + 0.5 * uTint), 1.0);",
+                                    "    gl_FragColor = vec4(mix(cool, warm, ring) * (0.5 + 0.5 * uTint), 1.0);\n"
+                                    "    if (vST.s < 0.05 && vST.t < 0.05) gl_FragColor.rgb += 0.3;"));
+    auto r = runGlimmer(gradeArgs(cls, dir.path() / "out"), 120);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    auto rows = csvRows(dir.path() / "out" / "grades.csv");
+    EXPECT_EQ(rows["right"], "100,pass,1.0000,inf|,");
+    EXPECT_EQ(rows["patch"].substr(rows["patch"].find(','), 6), ",look,") << rows["patch"];
+    EXPECT_NE(rows["patch"].find("a local error: 0.22% of the pixels off by more than 24 levels, the worst 32x32 tile "
+                                 "at SSIM"), std::string::npos) << rows["patch"];
+}
+
+// Without --timeout, grading has a time limit of its own, scaled to the
+// solution's time on this machine in this run (issue 29), and says how it
+// was chosen; a runaway submission is stopped by it. Two settings (--vary:
+// the defaults and one more), so the limit is its floor: 10 s each, and
+// 10 s for preparing.
+TEST(CliGrade, ATimeLimitIsOnByDefaultAndSaysHowItWasChosen) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class";
+    const std::string frag = readAll(kSolution / "rings.frag");
+    std::string body;
+    for (int k = 0; k < 40; ++k) body += "        a = sin(a * 1.0001 + float(i) * 1e-5 + vST.s + " + std::to_string(k) + ".0);\n";
+    student(cls / "slow", replaced(frag, "    gl_FragColor = ", "    float a = r;\n    for (int i = 0; i < 600000; ++i) {\n" +
+                                                                 body + "    }\n    gl_FragColor = vec4(a) + "));
+    std::vector<std::string> args = {"batch", cls.string(), "--reference", (kSolution / "rings.glib").string(), "-o",
+                                     (dir.path() / "out").string(), "--size", "128x128", "--backend", "osmesa",
+                                     "--vary", "uFreq=6"};
+    auto r = runGlimmer(args, 120);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find("glimmer: grading: each submission may take 30 s: per setting the larger of 10 s and 20 x "
+                         "the solution's own time there (10, 10 s), and the same for preparing (10 s); --timeout sets "
+                         "another"),
+              std::string::npos) << r.err;
+    auto rows = csvRows(dir.path() / "out" / "grades.csv");
+    EXPECT_EQ(rows["slow"].substr(0, rows["slow"].find(',', rows["slow"].find('|'))),
+              "0,error,,|timed out at setting defaults (1 of 2)");
 }
 
 TEST(CliGrade, TheSandboxIsOnUnlessTurnedOffAndThenSaidOnce) {

@@ -1,4 +1,5 @@
 // Settings to try, verdicts, and the comparison of real pixels.
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -123,6 +124,40 @@ TEST(Grading, ThePassNeedsBothSsimAndPsnr) {
     ASSERT_GE(c.ssim, t.passSsim);  // what makes the picture a test of the PSNR half
     EXPECT_NEAR(c.psnr, 20.2, 0.3);  // 25 of 255 on most channels: about 20 log10(255 / 25) dB
     EXPECT_EQ(judge({c}, {}, t, worst).kind, "look");
+}
+
+// Issue 29: what a mean misses. A 4x4 patch 40 levels off in a 64x64
+// gradient is 16 of 4096 pixels (0.39%) off by more than kLocalLevels and
+// one tile far below the rest, while SSIM and PSNR alone would pass it;
+// 24 levels is not "more than" 24. The verdict is "look", the setting with
+// the local error the one shown, and its notes say where.
+TEST(Grading, ALocalErrorIsCountedAndMakesAPassALook) {
+    Image solution = gradient(64, 64), patched = solution, edge = solution;
+    for (int y = 40; y < 44; ++y)
+        for (int x = 40; x < 44; ++x)
+            for (int ch = 0; ch < 3; ++ch) {
+                const size_t i = (size_t(y) * 64 + size_t(x)) * 4 + size_t(ch);
+                patched.u8[i] = std::uint8_t(std::min(255, solution.u8[i] + 40));
+                edge.u8[i] = std::uint8_t(std::min(255, solution.u8[i] + 24));
+            }
+    Comparison c = comparePictures(patched, solution);
+    EXPECT_DOUBLE_EQ(c.offShare, 16.0 / 4096.0);
+    EXPECT_LT(c.worstTile, 0.99);  // an offset: SSIM is kind to it (0.978), the count is not
+    EXPECT_DOUBLE_EQ(comparePictures(edge, solution).offShare, 0.0);
+    EXPECT_DOUBLE_EQ(comparePictures(solution, solution).offShare, 0.0);
+    EXPECT_DOUBLE_EQ(comparePictures(solution, solution).worstTile, 1.0);
+    Thresholds t;
+    size_t worst = 9;
+    Comparison whole{INFINITY, 1.0, false};
+    Comparison local = c;
+    local.ssim = 0.99;  // as a mean would have it
+    local.psnr = 40;
+    Verdict v = judge({whole, local}, {}, t, worst);
+    EXPECT_EQ(v.kind, "look");
+    EXPECT_EQ(worst, 1u);
+    EXPECT_EQ(v.notes, "a local error: 0.39% of the pixels off by more than 24 levels, the worst 32x32 tile at SSIM " +
+                           fmt::format("{:.3f}", c.worstTile));
+    EXPECT_EQ(judge({whole, whole}, {}, t, worst).kind, "pass");
 }
 
 // Issue 26: a single-colour picture is wrong even where its SSIM would be
