@@ -65,6 +65,10 @@ void addBatchCommand(CLI::App& app, BatchOptions& o) {
     sub->add_flag("--no-sandbox", o.noSandbox, "grading: let submissions read files outside their folders "
                                                "(grading sandboxes by default)");
     sub->add_flag("--resume", o.resume, "grading: keep what -o already holds and grade only what is missing");
+    sub->add_option("--only", o.only, "grading: regrade only this student (as the report names them; repeatable) "
+                                      "into what -o already holds");
+    sub->add_option("--overrides", o.overrides, "grading: a CSV student,score,comment whose scores and comments the "
+                                                "report, the CSV and the feedback pages take over the computed ones");
     sub->add_option("--pass-ssim", o.passSsim, "grading: SSIM a pass needs at every setting")
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
     sub->add_option("--pass-psnr", o.passPsnr, "grading: PSNR (dB) a pass needs at every setting")

@@ -24,9 +24,12 @@ void addBatchMergeCommand(CLI::App& app, BatchMergeOptions& o) {
     sub->add_option("shards", o.shards, "the shards' -o folders")->required();
     sub->add_option("-o,--output", o.outputDir, "the folder for the joined report.html, grades.csv and grades.jsonl")
         ->required();
+    sub->add_option("--overrides", o.overrides, "a CSV student,score,comment, as for batch --reference");
 }
 
 int runBatchMerge(const BatchMergeOptions& o) {
+    std::map<std::string, Override> overrides;
+    if (!loadOverrides(o.overrides, overrides)) return kExitUsage;
     ReportHeader header;
     std::vector<std::string> students;
     std::vector<std::vector<GradeRow>> shards;
@@ -82,7 +85,8 @@ int runBatchMerge(const BatchMergeOptions& o) {
     writeWhole(fs::path(o.outputDir) / "grading.txt", runHeaderText(header, students));
     header.expected = int(students.size());
     std::map<std::string, std::string> rowHtml;
-    writeReport(o.outputDir, header, merged, rowHtml, o.outputDir);
+    writeReport(o.outputDir, header, merged, rowHtml, o.outputDir, overrides);
+    warnUnusedOverrides(merged, overrides);
     reportWrote(fmt::format("{} ({} submissions from {} shards, each exactly once)",
                             (fs::path(o.outputDir) / "report.html").string(), merged.size(), shards.size()));
     return kExitOk;

@@ -4,6 +4,7 @@
 // arrives, and written at once: a record line (what --resume and
 // batch-merge read back), then the page and the CSV, rewritten at most
 // every two seconds and at the end (app/grade_report_files.cpp).
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <filesystem>
@@ -116,8 +117,39 @@ std::vector<std::string> pictureStems(const std::vector<Submission>& subs) {
 
 }  // namespace
 
+bool loadOverrides(const std::string& file, std::map<std::string, Override>& out) {
+    out.clear();
+    if (file.empty()) return true;
+    std::string text, why;
+    if (!readRegularFile(file, 16 << 20, text, why)) {
+        std::cerr << fmt::format("glimmer: error: --overrides {}: cannot read it: it {}\n", sanitizeForTerminal(file, false), why);
+        return false;
+    }
+    if (!parseOverrides(text, file, out, why)) {
+        std::cerr << sanitizeForTerminal(why, false) << "\n";
+        return false;
+    }
+    return true;
+}
+
+void warnUnusedOverrides(std::vector<GradeRow> rows, const std::map<std::string, Override>& overrides) {
+    for (const auto& name : applyOverrides(rows, overrides))
+        std::cerr << fmt::format("glimmer: warning: --overrides names '{}', whom no row has (as the report names "
+                                 "students)\n", sanitizeForTerminal(name, false));
+}
+
 int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs, int shard, int shards,
                   const BatchSettings& base) {
+    std::map<std::string, Override> overrides;
+    if (!loadOverrides(o.overrides, overrides)) return kExitUsage;
+    // --only regrades into a graded folder: as --resume, with those students' records dropped.
+    const bool resume = o.resume || !o.only.empty();
+    const std::set<std::string> only(o.only.begin(), o.only.end());
+    if (!o.only.empty() && !fs::exists(fs::path(o.outputDir) / "grades.jsonl")) {
+        std::cerr << fmt::format("glimmer: error: --only: {} holds no grading to regrade into (grades.jsonl); grade "
+                                 "the class first\n", o.outputDir);
+        return kExitUsage;
+    }
     std::vector<std::string> errors;
     std::vector<Submission> subs = listSubmissions(inputs, errors);
     for (const auto& e : errors) std::cerr << e << "\n";
@@ -175,9 +207,15 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     std::vector<std::string> mine;
     for (size_t i = 0; i < subs.size(); ++i)
         if (inShard(i, shard, shards)) mine.push_back(stems[i]);
+    for (const auto& name : only)
+        if (std::find(stems.begin(), stems.end(), name) == stems.end()) {
+            std::cerr << fmt::format("glimmer: error: --only {}: no such student in this class (as the report names "
+                                     "them)\n", sanitizeForTerminal(name, false));
+            return kExitUsage;
+        }
     header.expected = int(mine.size());
     // Resuming is only sound when the earlier run graded the same way.
-    if (o.resume && fs::exists(out / "grading.txt")) {
+    if (resume && fs::exists(out / "grading.txt")) {
         std::string text, why;
         ReportHeader before;
         std::vector<std::string> beforeStudents;
@@ -199,7 +237,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     // What an earlier run of this folder already graded.
     std::vector<GradeRow> rows;
     const fs::path records = out / "grades.jsonl";
-    if (o.resume && fs::exists(records)) {
+    if (resume && fs::exists(records)) {
         std::string text, why;
         if (!readRegularFile(records.string(), std::uint64_t(1) << 30, text, why)) {
             std::cerr << fmt::format("glimmer: error: --resume: {}: cannot read it: it {}\n", records.string(), why);
@@ -210,7 +248,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
             return kExitUsage;
         }
         std::set<std::string> wanted(mine.begin(), mine.end());
-        std::erase_if(rows, [&](const GradeRow& r) { return !wanted.count(r.student); });
+        std::erase_if(rows, [&](const GradeRow& r) { return !wanted.count(r.student) || only.count(r.student); });
     }
     std::set<std::string> graded;
     for (const auto& r : rows) graded.insert(r.student);
@@ -260,7 +298,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         recordOut << gradeRecord(r) << "\n";
         recordOut.flush();
         if (std::chrono::steady_clock::now() - lastWrite > std::chrono::seconds(2)) {
-            writeReport(out, header, rows, rowHtml, out);
+            writeReport(out, header, rows, rowHtml, out, overrides);
             lastWrite = std::chrono::steady_clock::now();
         }
     };
@@ -269,7 +307,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     std::vector<BatchJob> jobs;
     std::vector<size_t> jobStudent;  // index into subs
     for (size_t i = 0; i < subs.size(); ++i) {
-        if (!inShard(i, shard, shards) || graded.count(stems[i])) continue;
+        if (!inShard(i, shard, shards) || graded.count(stems[i]) || (!only.empty() && !only.count(stems[i]))) continue;
         GradeRow r;
         r.student = stems[i];
         r.submission = subs[i].path;
@@ -352,7 +390,8 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                  keep(r);
              });
     progress.finish();
-    writeReport(out, header, rows, rowHtml, out);
+    writeReport(out, header, rows, rowHtml, out, overrides);
+    warnUnusedOverrides(rows, overrides);
     std::map<std::string, int> counts;
     for (const auto& r : rows) ++counts[r.verdict];
     reportWrote(fmt::format("{} ({} submissions: {} pass, {} look, {} wrong, {} error), {}",

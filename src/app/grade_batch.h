@@ -9,6 +9,7 @@
 #include "process/batch.h"
 #include "pipeline/options.h"
 #include "grade/grade_report.h"
+#include "grade/overrides.h"
 
 namespace glimmer {
 
@@ -17,9 +18,18 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                   const BatchSettings& settings);
 
 // report.html and grades.csv in `dir`, the rows' pictures read relative to
-// `picturesDir`; `rowHtml` caches each student's row (pictures encoded once).
+// `picturesDir`, the teacher's overrides applied; `rowHtml` caches each
+// student's row (pictures encoded once), whose feedback page
+// (feedback/NAME.html) is written when the row is first made.
 void writeReport(const std::filesystem::path& dir, const ReportHeader& header, std::vector<GradeRow> rows,
-                 std::map<std::string, std::string>& rowHtml, const std::filesystem::path& picturesDir);
+                 std::map<std::string, std::string>& rowHtml, const std::filesystem::path& picturesDir,
+                 const std::map<std::string, Override>& overrides = {});
+
+// The teacher's overrides file (`file` empty: none); false, said on
+// stderr, when it cannot be read or is not one (exit 2). And the warning
+// for names in it that no row has (a typo would otherwise go unseen).
+bool loadOverrides(const std::string& file, std::map<std::string, Override>& out);
+void warnUnusedOverrides(std::vector<GradeRow> rows, const std::map<std::string, Override>& overrides);
 
 // `text` into `path` through a temporary file and a rename.
 bool writeWhole(const std::filesystem::path& path, const std::string& text);

@@ -2,6 +2,7 @@
 // from rows (pictures read back and inlined as thumbnails), each written
 // whole through a temporary file and a rename, so a reader or a kill never
 // sees half a page. Shared by batch --reference and batch-merge.
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 
@@ -19,8 +20,47 @@ std::string dataUrl(const Image& picture) {
     return picture.empty() ? "" : "data:image/png;base64," + base64(encodePng(thumbnail(picture, 96), 6));
 }
 
+// "pictures/alice-3.png" -> "pictures/alice-": the setting's number is
+// the last thing before ".png" (app/grade_batch.cpp names them so).
+std::string settingPrefix(const std::string& picture) {
+    if (picture.size() < 5 || picture.compare(picture.size() - 4, 4, ".png") != 0) return "";
+    size_t end = picture.size() - 4, start = end;
+    while (start > 0 && std::isdigit(static_cast<unsigned char>(picture[start - 1]))) --start;
+    return start < end && start > 0 && picture[start - 1] == '-' ? picture.substr(0, start) : "";
+}
+
+std::string fullDataUrl(const Image& picture) {
+    return picture.empty() ? "" : "data:image/png;base64," + base64(encodePng(picture, 6));
+}
+
+// The student's feedback page: every setting's pictures, full size.
+void writeFeedback(const fs::path& dir, const ReportHeader& header, const GradeRow& row, const fs::path& picturesDir) {
+    std::vector<SettingPictures> settings;
+    const std::string mine = settingPrefix(row.picture), theirs = settingPrefix(row.solution);
+    for (size_t k = 0; k < header.settings.size() && !mine.empty() && !theirs.empty(); ++k) {
+        SettingPictures s;
+        s.label = header.settings[k];
+        Image student, solution;
+        std::string why;
+        const bool a = loadImage((picturesDir / (mine + std::to_string(k) + ".png")).string(), student, why);
+        const bool b = loadImage((picturesDir / (theirs + std::to_string(k) + ".png")).string(), solution, why);
+        if (a) s.student = fullDataUrl(student);
+        if (b) s.solution = fullDataUrl(solution);
+        if (a && b) s.difference = fullDataUrl(differencePicture(student, solution));
+        settings.push_back(s);
+    }
+    std::error_code ec;
+    fs::create_directories(dir / "feedback", ec);
+    // The solution by its name only: the page goes to a student, the teacher's folders stay the teacher's.
+    writeWhole(dir / "feedback" / (row.student + ".html"),
+               feedbackHtml(row, fs::path(header.solution).filename().string(), settings));
+}
+
 RowPictures rowPictures(const GradeRow& row, const fs::path& dir) {
     RowPictures p;
+    p.studentHref = row.picture;
+    p.solutionHref = row.solution;
+    p.feedbackHref = "feedback/" + row.student + ".html";
     Image student, solution;
     std::string why;
     const bool haveStudent = !row.picture.empty() && loadImage((dir / row.picture).string(), student, why);
@@ -39,12 +79,17 @@ bool writeWhole(const fs::path& path, const std::string& text) {
 }
 
 void writeReport(const fs::path& dir, const ReportHeader& header, std::vector<GradeRow> rows,
-                 std::map<std::string, std::string>& rowHtml, const fs::path& picturesDir) {
+                 std::map<std::string, std::string>& rowHtml, const fs::path& picturesDir,
+                 const std::map<std::string, Override>& overrides) {
+    applyOverrides(rows, overrides);
     sortForReview(rows);
     std::vector<std::string> html;
     for (const auto& r : rows) {
         auto it = rowHtml.find(r.student);
-        if (it == rowHtml.end()) it = rowHtml.emplace(r.student, reportRowHtml(r, rowPictures(r, picturesDir))).first;
+        if (it == rowHtml.end()) {  // a row's pictures and its feedback page are made once
+            it = rowHtml.emplace(r.student, reportRowHtml(r, rowPictures(r, picturesDir))).first;
+            writeFeedback(dir, header, r, picturesDir);
+        }
         html.push_back(it->second);
     }
     writeWhole(dir / "report.html", reportHtml(header, rows, html));

@@ -1,6 +1,7 @@
 #include "grade/grade_report.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 
@@ -62,10 +63,20 @@ void sortForReview(std::vector<GradeRow>& rows) {
     });
 }
 
+std::string hrefOf(const std::string& path) {
+    std::string out;
+    for (unsigned char c : path) {
+        if (std::isalnum(c) || c == '-' || c == '.' || c == '_' || c == '~' || c == '/') out += char(c);
+        else out += fmt::format("%{:02X}", c);
+    }
+    return out;
+}
+
 std::string reportRowHtml(const GradeRow& r, const RowPictures& p) {
-    auto img = [](const std::string& url, const std::string& alt) {
-        return url.empty() ? fmt::format("<div class=none>no {}</div>", alt)
-                           : fmt::format("<img src=\"{}\" alt=\"{}\" title=\"{}\">", url, alt, alt);
+    auto img = [](const std::string& url, const std::string& alt, const std::string& href = "") {
+        if (url.empty()) return fmt::format("<div class=none>no {}</div>", alt);
+        std::string tag = fmt::format("<img src=\"{}\" alt=\"{}\" title=\"{}\">", url, alt, alt);
+        return href.empty() ? tag : fmt::format("<a href=\"{}\">{}</a>", htmlEscape(hrefOf(href)), tag);  // full size on click
     };
     std::string measures = r.verdict == "error"
                                ? std::string("&nbsp;")
@@ -75,14 +86,23 @@ std::string reportRowHtml(const GradeRow& r, const RowPictures& p) {
     // An error says which (issue 29: one red ERROR stood for a refused zip, an
     // unreadable one, a time-out and a shader that does not compile alike).
     const std::string label = r.verdict == "error" && !r.notes.empty() ? "error: " + r.notes : r.verdict;
+    const std::string score = r.computedScore >= 0 ? fmt::format("{} <small>(set by hand; computed {})</small>", r.score,
+                                                                 r.computedScore)
+                                                   : std::to_string(r.score);
+    std::string extra;
+    if (!r.comment.empty()) extra += "<p class=comment>Teacher: " + htmlEscape(r.comment) + "</p>";
+    if (!p.feedbackHref.empty())
+        extra += fmt::format("<p><a href=\"{}\">feedback page</a> (every setting, full size, to hand back)</p>",
+                             htmlEscape(hrefOf(p.feedbackHref)));
     return fmt::format(
         "<tr class=\"{0}\" id=\"s-{1}\"><td class=who><b>{1}</b><br><span class=v>{10}</span> <span class=score>{2}</span><br>"
-        "<small>{3:.2f} s</small></td>\n<td class=pics>{4}{5}{6}</td>\n<td class=why><small>{7}</small>"
-        "{8}{9}</td></tr>\n",
-        htmlEscape(r.verdict), htmlEscape(r.student), r.score, r.seconds, img(p.student, "student"),
-        img(p.solution, "solution"), img(p.difference, "difference x4"), measures,
+        "<small>{3:.2f} s</small><br><small class=path>{11}</small></td>\n<td class=pics>{4}{5}{6}</td>\n"
+        "<td class=why><small>{7}</small>{12}{8}{9}</td></tr>\n",
+        htmlEscape(r.verdict), htmlEscape(r.student), score, r.seconds, img(p.student, "student", p.studentHref),
+        img(p.solution, "solution", p.solutionHref), img(p.difference, "difference x4"), measures,
         r.notes.empty() ? "" : "<p>" + htmlEscape(r.notes) + "</p>",
-        r.diagnostics.empty() ? "" : "<pre>" + htmlEscape(r.diagnostics) + "</pre>", htmlEscape(label));
+        r.diagnostics.empty() ? "" : "<pre>" + htmlEscape(r.diagnostics) + "</pre>", htmlEscape(label),
+        htmlEscape(r.submission), extra);
 }
 
 std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows, const std::vector<std::string>& rowHtml) {
@@ -102,7 +122,7 @@ std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows,
            "display:inline-block;vertical-align:top;object-fit:contain;background:#eee}\n"
            ".none{font-size:11px;color:#888;text-align:center;line-height:96px}\n"
            "pre{margin:4px 0 0;font-size:12px;background:#f6f6f6;padding:4px;max-height:9em;overflow:auto;white-space:pre-wrap}\n"
-           "td.why p{margin:2px 0}\n.v{font-weight:bold;text-transform:uppercase;font-size:12px}\n"
+           "td.why p{margin:2px 0}\n.comment{background:#eef;padding:2px 4px}\n.path{color:#777;word-break:break-all}\n.v{font-weight:bold;text-transform:uppercase;font-size:12px}\n"
            ".score{font-size:18px}\n"
            "tr.error .v,.counts .error{color:#fff;background:#b00}\ntr.wrong .v,.counts .wrong{color:#fff;background:#d60}\n"
            "tr.look .v,.counts .look{background:#fd4}\ntr.pass .v,.counts .pass{color:#fff;background:#282}\n"
@@ -121,7 +141,8 @@ std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows,
     out += "<p class=counts>";
     for (const char* v : {"error", "wrong", "look", "pass"})
         out += fmt::format("<span class={0}>{1} {0}</span>", v, counts[v]);
-    out += "<small>pictures: the student's, the solution's, their difference x4, at the worst setting</small></p>\n";
+    out += "<small>pictures: the student's, the solution's, their difference x4, at the worst setting; a click "
+           "shows one full size; each row links to the student's feedback page</small></p>\n";
     // At a glance: every student as a chip in the table's order, a link to its row.
     out += "<p class=glance>";
     for (const auto& r : rows)
@@ -133,14 +154,50 @@ std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows,
     return out;
 }
 
+std::string feedbackHtml(const GradeRow& r, const std::string& solutionName, const std::vector<SettingPictures>& settings) {
+    auto img = [](const std::string& url, const std::string& alt) {
+        return url.empty() ? fmt::format("<div class=none>no {}</div>", alt)
+                           : fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption>{}</figcaption></figure>", url,
+                                         alt, alt);
+    };
+    const std::string label = r.verdict == "error" && !r.notes.empty() ? "error: " + r.notes : r.verdict;
+    std::string out = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>Feedback: " + htmlEscape(r.student) +
+                      "</title>\n<style>\nbody{font:15px/1.4 system-ui,sans-serif;margin:16px;color:#222;max-width:1100px}\n"
+                      "h1{font-size:20px;margin:0 0 6px}\nfigure{display:inline-block;margin:0 8px 8px 0;vertical-align:top}\n"
+                      "figure img{max-width:340px;image-rendering:pixelated;border:1px solid #ccc;display:block}\n"
+                      "figcaption{font-size:12px;color:#555}\n.none{display:inline-block;width:200px;color:#888}\n"
+                      "pre{background:#f6f6f6;padding:6px;white-space:pre-wrap}\n.comment{background:#eef;padding:6px}\n"
+                      ".v{font-weight:bold;text-transform:uppercase}\nh2{font-size:16px;margin:14px 0 4px}\n"
+                      "</style></head><body>\n";
+    out += "<h1>" + htmlEscape(r.student) + ": graded against " + htmlEscape(solutionName) + "</h1>\n";
+    out += fmt::format("<p><span class=v>{}</span> · score {}{}</p>\n", htmlEscape(label), r.score,
+                       r.computedScore >= 0 ? fmt::format(" (set by your teacher; computed {})", r.computedScore) : "");
+    if (!r.comment.empty()) out += "<p class=comment>Your teacher: " + htmlEscape(r.comment) + "</p>\n";
+    if (!r.notes.empty()) out += "<p>" + htmlEscape(r.notes) + "</p>\n";
+    if (r.verdict != "error")
+        out += fmt::format("<p>SSIM {:.3f} · PSNR {} at the setting that differs most ({}). SSIM by setting: {}</p>\n",
+                           r.ssim, htmlEscape(dB(r.psnr)), htmlEscape(r.worstSetting), htmlEscape(r.bySetting));
+    if (!r.diagnostics.empty()) out += "<h2>What Glimmer said</h2>\n<pre>" + htmlEscape(r.diagnostics) + "</pre>\n";
+    if (!settings.empty())
+        out += "<h2>Every setting: yours, the solution's, their difference x4</h2>\n";
+    for (const auto& s : settings) {
+        out += "<h3>" + htmlEscape(s.label) + "</h3>\n<div>";
+        out += img(s.student, "yours") + img(s.solution, "the solution") + img(s.difference, "difference x4");
+        out += "</div>\n";
+    }
+    out += "</body></html>\n";
+    return out;
+}
+
 std::string gradesCsv(std::vector<GradeRow> rows) {
     std::sort(rows.begin(), rows.end(), [](const GradeRow& a, const GradeRow& b) { return a.student < b.student; });
-    std::string out = "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic\n";
+    std::string out = "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic,submission,computed_score,comment\n";
     for (const auto& r : rows)
-        out += fmt::format("{},{},{},{},{},{:.2f},{},{}\n", csvCell(r.student), r.score, r.verdict,
+        out += fmt::format("{},{},{},{},{},{:.2f},{},{},{},{},{}\n", csvCell(r.student), r.score, r.verdict,
                            r.verdict == "error" ? "" : fmt::format("{:.4f}", r.ssim),
                            r.verdict == "error" ? "" : std::isinf(r.psnr) ? "inf" : fmt::format("{:.2f}", r.psnr),
-                           r.seconds, csvCell(r.notes), csvCell(firstLine(r.diagnostics)));
+                           r.seconds, csvCell(r.notes), csvCell(firstLine(r.diagnostics)), csvCell(r.submission),
+                           r.computedScore >= 0 ? std::to_string(r.computedScore) : "", csvCell(r.comment));
     return out;
 }
 

@@ -20,6 +20,10 @@ struct GradeRow {
     double seconds = 0;         // render time of every setting
     std::string picture;        // the student's PNG at the worst setting ("" when none)
     std::string solution;       // the solution's PNG at that setting
+    // The teacher's, from an overrides file (grade/overrides.h), applied when
+    // a report is written; never in the records.
+    int computedScore = -1;     // the machine's score when the teacher set another; -1: not overridden
+    std::string comment;
 };
 
 // One JSON object on one line (util/json.h's rules: UTF-8, "inf" for an

@@ -61,6 +61,8 @@ struct BatchOptions : CommonOptions {
     std::vector<std::string> vary;  // NAME=V1,V2,...: the settings compared (default: the solution's sliders)
     bool noSandbox = false;         // --no-sandbox: grading sandboxes by default
     bool resume = false;            // --resume: keep what -o already holds, grade only the rest
+    std::vector<std::string> only;  // --only NAME: regrade these students into what -o already holds
+    std::string overrides;          // --overrides FILE: the teacher's scores and comments (grade/overrides.h)
     double passSsim = 0.95, passPsnr = 30, lookSsim = 0.70;
 };
 
@@ -68,6 +70,7 @@ struct BatchOptions : CommonOptions {
 struct BatchMergeOptions {
     std::vector<std::string> shards;  // the shards' -o folders
     std::string outputDir;
+    std::string overrides;            // --overrides FILE, as for batch
 };
 
 struct TradeoffOptions {

@@ -62,22 +62,51 @@ void zipFolder(const fs::path& zipPath, const std::map<std::string, std::string>
     ASSERT_EQ(zip_close(z), 0);
 }
 
-// student -> its CSV line without the seconds column (times differ run to run).
+// The cells of one CSV line as written (quotes kept), split at the commas
+// outside quotes.
+std::vector<std::string> rawCells(const std::string& line) {
+    std::vector<std::string> cells(1);
+    bool quoted = false;
+    for (char c : line) {
+        if (c == '"') quoted = !quoted;
+        if (c == ',' && !quoted) cells.emplace_back();
+        else cells.back() += c;
+    }
+    return cells;
+}
+
+const std::string kCsvHeader =
+    "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic,submission,computed_score,comment";
+
+// student -> its CSV line without the seconds column (times differ run to
+// run) and without the submission's path and the teacher's columns:
+// "score,verdict,ssim,psnr|notes,first_diagnostic".
 std::map<std::string, std::string> csvRows(const fs::path& csv) {
     std::map<std::string, std::string> out;
     std::istringstream in(readAll(csv));
     std::string line;
     std::getline(in, line);
-    EXPECT_EQ(line, "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic");
+    EXPECT_EQ(line, kCsvHeader);
     while (std::getline(in, line)) {
-        std::vector<std::string> cells;
-        size_t start = 0;
-        for (int k = 0; k < 6; ++k) {
-            size_t comma = line.find(',', start);
-            cells.push_back(line.substr(start, comma - start));
-            start = comma + 1;
-        }
-        out[cells[0]] = cells[1] + "," + cells[2] + "," + cells[3] + "," + cells[4] + "|" + line.substr(start);
+        auto c = rawCells(line);
+        EXPECT_EQ(c.size(), 11u) << line;
+        if (c.size() < 8) continue;
+        out[c[0]] = c[1] + "," + c[2] + "," + c[3] + "," + c[4] + "|" + c[6] + "," + c[7];
+    }
+    return out;
+}
+
+// student -> its cell in column `column` (raw, quotes kept).
+std::map<std::string, std::string> csvColumn(const fs::path& csv, const std::string& column) {
+    std::map<std::string, std::string> out;
+    std::istringstream in(readAll(csv));
+    std::string line;
+    std::getline(in, line);
+    auto names = rawCells(line);
+    const size_t k = size_t(std::find(names.begin(), names.end(), column) - names.begin());
+    while (std::getline(in, line)) {
+        auto c = rawCells(line);
+        if (k < c.size()) out[c[0]] = c[k];
     }
     return out;
 }
@@ -395,6 +424,64 @@ TEST(CliGrade, ATimeLimitIsOnByDefaultAndSaysHowItWasChosen) {
     auto rows = csvRows(dir.path() / "out" / "grades.csv");
     EXPECT_EQ(rows["slow"].substr(0, rows["slow"].find(',', rows["slow"].find('|'))),
               "0,error,,|timed out at setting defaults (1 of 2)");
+}
+
+// Issue 29: a report a teacher can act on and hand back. Every row links
+// its pictures full size and the student's feedback page (every setting,
+// theirs beside the solution's and the difference, the messages, the
+// teacher's comment); --overrides sets a score and a comment that the
+// report, the CSV and the page take; --only regrades one student into the
+// graded folder and leaves every other record as it was.
+TEST(CliGrade, FeedbackPagesOverridesAndRegradingOneStudent) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class", out = dir.path() / "out";
+    const std::string frag = readAll(kSolution / "rings.frag");
+    student(cls / "right", frag);
+    student(cls / "painted", replaced(frag, "6.2831853 * uFreq", "6.2831853 * 6.0"));
+    std::ofstream(dir.path() / "overrides.csv") << "student,score,comment\npainted,55,\"the rings are right <b>at 6</b>\"\n"
+                                                   "nobody,1,\n";
+    auto args = gradeArgs(cls, out);
+    args.insert(args.end(), {"--overrides", (dir.path() / "overrides.csv").string()});
+    auto r = runGlimmer(args, 120);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(countOf(r.err, "glimmer: warning: --overrides names 'nobody', whom no row has"), 1) << r.err;
+    EXPECT_EQ(csvColumn(out / "grades.csv", "score")["painted"], "55");
+    EXPECT_EQ(csvColumn(out / "grades.csv", "computed_score")["painted"], "7");
+    EXPECT_EQ(csvColumn(out / "grades.csv", "comment")["painted"], "the rings are right <b>at 6</b>");
+    EXPECT_EQ(csvColumn(out / "grades.csv", "submission")["right"], (cls / "right").string());
+    const std::string report = readAll(out / "report.html");
+    EXPECT_NE(report.find("<a href=\"feedback/painted.html\">feedback page</a>"), std::string::npos);
+    EXPECT_NE(report.find("<a href=\"pictures/painted-"), std::string::npos);  // the thumbnail, full size on click
+    EXPECT_NE(report.find("Teacher: the rings are right &lt;b&gt;at 6&lt;/b&gt;"), std::string::npos);
+    const std::string page = readAll(out / "feedback" / "painted.html");
+    EXPECT_NE(page.find("Your teacher: the rings are right &lt;b&gt;at 6&lt;/b&gt;"), std::string::npos);
+    EXPECT_NE(page.find("score 55 (set by your teacher; computed 7)"), std::string::npos);
+    EXPECT_EQ(countOf(page, "<h3>"), 5);  // the five settings
+    EXPECT_EQ(countOf(page, "<img src=\"data:image/png;base64,"), 15);  // yours, the solution's, the difference, each
+    EXPECT_TRUE(fs::exists(out / "feedback" / "right.html"));
+
+    // The student fixes the shader; only they are graded again.
+    const std::string rightRecord = [&] {
+        std::istringstream in(readAll(out / "grades.jsonl"));
+        for (std::string line; std::getline(in, line);)
+            if (line.find("\"student\":\"right\"") != std::string::npos) return line;
+        return std::string();
+    }();
+    student(cls / "painted2", frag);
+    fs::remove_all(cls / "painted");
+    fs::rename(cls / "painted2", cls / "painted");
+    auto again = gradeArgs(cls, out);
+    again.insert(again.end(), {"--only", "painted"});
+    auto r2 = runGlimmer(again, 120);
+    EXPECT_EQ(r2.exitCode, 0) << r2.err;
+    EXPECT_EQ(countOf(r2.err, "batch: 1/1 graded"), 1) << r2.err;
+    EXPECT_EQ(csvRows(out / "grades.csv")["painted"], "100,pass,1.0000,inf|,");
+    EXPECT_NE(readAll(out / "grades.jsonl").find(rightRecord), std::string::npos);  // untouched
+    auto typo = gradeArgs(cls, out);
+    typo.insert(typo.end(), {"--only", "paintd"});
+    auto r3 = runGlimmer(typo, 60);
+    EXPECT_EQ(r3.exitCode, 2);
+    EXPECT_EQ(r3.err, "glimmer: error: --only paintd: no such student in this class (as the report names them)\n");
 }
 
 TEST(CliGrade, TheSandboxIsOnUnlessTurnedOffAndThenSaidOnce) {

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "grade/grade_report.h"
+#include "grade/overrides.h"
 #include "grade/grade_row.h"
 
 namespace glimmer {
@@ -39,10 +40,10 @@ TEST(GradeReport, CsvIsInNameOrderQuotedAndFormulaSafe) {
     c.ssim = 1;
     c.psnr = INFINITY;
     EXPECT_EQ(gradesCsv({a, b, c}),
-              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic\n"
-              "\"'=HYPERLINK(\"\"x\"\")\",40,wrong,0.4000,12.35,0.50,\"SSIM 0.400, PSNR 12.3 dB at the worst setting\",\n"
-              "amy,100,pass,1.0000,inf,0.00,,\n"
-              "bob,0,error,,,0.00,,\"class/bob/x.glib:3:1: error: Ortho takes 4 numbers, got 3\"\n");
+              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic,submission,computed_score,comment\n"
+              "\"'=HYPERLINK(\"\"x\"\")\",40,wrong,0.4000,12.35,0.50,\"SSIM 0.400, PSNR 12.3 dB at the worst setting\",,,,\n"
+              "amy,100,pass,1.0000,inf,0.00,,,,,\n"
+              "bob,0,error,,,0.00,,\"class/bob/x.glib:3:1: error: Ortho takes 4 numbers, got 3\",,,\n");
 }
 
 // Issue 26: every start a spreadsheet runs as a formula (= + - @) gets a
@@ -53,13 +54,13 @@ TEST(GradeReport, CsvGuardsEveryFormulaStartAndQuotesLineBreaks) {
              cr = row("x\ry", "wrong", 6);
     plus.notes = "+1";
     EXPECT_EQ(gradesCsv({plus, minus, at, eq, nl, cr}),
-              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic\n"
-              "'+cmd|' /C calc'!A0,1,wrong,0.0000,0.00,0.00,'+1,\n"
-              "'-2+3,2,wrong,0.0000,0.00,0.00,,\n"
-              "'=1+1,4,wrong,0.0000,0.00,0.00,,\n"
-              "'@SUM(A1:A9),3,wrong,0.0000,0.00,0.00,,\n"
-              "\"two\nlines\",5,wrong,0.0000,0.00,0.00,,\n"
-              "\"x\ry\",6,wrong,0.0000,0.00,0.00,,\n");
+              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic,submission,computed_score,comment\n"
+              "'+cmd|' /C calc'!A0,1,wrong,0.0000,0.00,0.00,'+1,,,,\n"
+              "'-2+3,2,wrong,0.0000,0.00,0.00,,,,,\n"
+              "'=1+1,4,wrong,0.0000,0.00,0.00,,,,,\n"
+              "'@SUM(A1:A9),3,wrong,0.0000,0.00,0.00,,,,,\n"
+              "\"two\nlines\",5,wrong,0.0000,0.00,0.00,,,,,\n"
+              "\"x\ry\",6,wrong,0.0000,0.00,0.00,,,,,\n");
 }
 
 // Issue 29: a tab or a carriage return before the formula still makes a
@@ -67,13 +68,54 @@ TEST(GradeReport, CsvGuardsEveryFormulaStartAndQuotesLineBreaks) {
 TEST(GradeReport, CsvGuardsATabOrCarriageReturnFirst) {
     GradeRow tab = row("\t=1+1", "wrong", 1), cr = row("\r=1+1", "wrong", 2);
     EXPECT_EQ(gradesCsv({tab, cr}),
-              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic\n"
-              "'\t=1+1,1,wrong,0.0000,0.00,0.00,,\n"
-              "\"'\r=1+1\",2,wrong,0.0000,0.00,0.00,,\n");
+              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic,submission,computed_score,comment\n"
+              "'\t=1+1,1,wrong,0.0000,0.00,0.00,,,,,\n"
+              "\"'\r=1+1\",2,wrong,0.0000,0.00,0.00,,,,,\n");
 }
 
 // Issue 26: a student's name goes into attributes (the row's id, the glance
 // strip's link): a '"' in it must not end the attribute.
+// Issue 29: the teacher's overrides file. Scores replace the computed ones
+// (kept beside them), comments go to the report, the CSV and the feedback
+// page; bad files get one message at their line.
+TEST(GradeReport, OverridesReplaceScoresAndCarryComments) {
+    std::map<std::string, Override> o;
+    std::string error;
+    ASSERT_TRUE(parseOverrides("\xEF\xBB\xBFstudent,score,comment\r\nalice,85,\"right, but \"\"see me\"\"\"\r\n"
+                               "bob,,late\n\nnobody,3,\n", "o.csv", o, error)) << error;
+    ASSERT_EQ(o.size(), 3u);
+    EXPECT_EQ(o["alice"].score, 85);
+    EXPECT_EQ(o["alice"].comment, "right, but \"see me\"");
+    EXPECT_FALSE(o["bob"].score.has_value());
+    std::vector<GradeRow> rows = {row("alice", "wrong", 40), row("bob", "pass", 100)};
+    EXPECT_EQ(applyOverrides(rows, o), std::vector<std::string>{"nobody"});
+    EXPECT_EQ(rows[0].score, 85);
+    EXPECT_EQ(rows[0].computedScore, 40);
+    EXPECT_EQ(rows[1].score, 100);
+    EXPECT_EQ(rows[1].computedScore, -1);
+    EXPECT_EQ(gradesCsv(rows), "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic,submission,"
+                               "computed_score,comment\n"
+                               "alice,85,wrong,0.0000,0.00,0.00,,,,40,\"right, but \"\"see me\"\"\"\n"
+                               "bob,100,pass,0.0000,0.00,0.00,,,,,late\n");
+    const std::string html = reportRowHtml(rows[0], {});
+    EXPECT_NE(html.find("85 <small>(set by hand; computed 40)</small>"), std::string::npos) << html;
+    EXPECT_NE(html.find("<p class=comment>Teacher: right, but &quot;see me&quot;</p>"), std::string::npos) << html;
+    const std::string page = feedbackHtml(rows[0], "solution.glib", {{"defaults", "data:a", "data:b", "data:c"}});
+    EXPECT_NE(page.find("Your teacher: right, but &quot;see me&quot;"), std::string::npos);
+    EXPECT_NE(page.find("score 85 (set by your teacher; computed 40)"), std::string::npos);
+    EXPECT_NE(page.find("<img src=\"data:c\" alt=\"difference x4\">"), std::string::npos);
+    for (auto [text, want] : std::vector<std::pair<std::string, std::string>>{
+             {"name,score,comment\n", "o.csv:1: error: the first line must be 'student,score,comment'"},
+             {"student,score,comment\nalice,101,\n", "o.csv:2: error: score '101' is not a whole number from 0 to 100"},
+             {"student,score,comment\nalice,8.5,\n", "o.csv:2: error: score '8.5' is not a whole number from 0 to 100"},
+             {"student,score,comment\na,1,\"two\nlines\"\na,2,\n", "o.csv:4: error: 'a' is named twice"},
+             {"student,score,comment\na,1,\"open\n", "o.csv:2: error: a quote that is never closed"},
+             {"student,score,comment\na,1\n", "o.csv:2: error: 2 cells; a line is student,score,comment"}}) {
+        EXPECT_FALSE(parseOverrides(text, "o.csv", o, error)) << text;
+        EXPECT_EQ(error, want) << text;
+    }
+}
+
 TEST(GradeReport, AQuoteInANameCannotLeaveItsAttribute) {
     EXPECT_EQ(htmlEscape("a \"b\" <c> & 'd'"), "a &quot;b&quot; &lt;c&gt; &amp; &#39;d&#39;");
     GradeRow r = row("x\" onmouseover=\"alert(1)", "pass", 100);
