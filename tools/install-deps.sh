@@ -29,6 +29,9 @@ test_packages=(
   x11-apps                            # xwd: the viewer test reads the X screen back
   xdotool imagemagick                 # viewer tests drive the window and capture it as a person would
   emscripten chromium                 # the browser build (src/web) and its headless tests (tests/web/)
+  firefox-esr                         # the page's checks in Firefox (tests/web/engine_firefox.sh)
+  webkit2gtk-driver                   # and in WebKit, Safari's engine: WebKitWebDriver, with WebKitGTK's
+                                      # MiniBrowser from libwebkit2gtk-4.1-0, which it depends on (engine_webkit.sh)
   node-ws                             # the page driven over the DevTools protocol (tools/cdp-page.mjs)
   libjs-codemirror                    # the page's code editor (CodeMirror 5, src/web/page/glimmer-editor.js)
   python3-fonttools                   # the page's panel fonts cut to Latin-1 (src/web/CMakeLists.txt)
@@ -68,9 +71,25 @@ add_deb_src() {
     $SUDO apt-get update -qq
   fi
 }
+# The driver library for the page's checks in Firefox and Chromium
+# (tools/page-engine.mjs): puppeteer-core from npm, the exact versions of
+# tools/package-lock.json, into tools/node_modules (ignored by git). It never
+# downloads a browser (puppeteer-core has no install step; the engines are
+# Debian's packages above). Run again only when the lock file changed.
+node_tools() {
+  [ "${1:-all}" = all ] || return 0
+  command -v npm >/dev/null || $SUDO apt-get install -y -qq --no-install-recommends npm >/dev/null
+  local here
+  here="$(cd "$(dirname "$0")" && pwd)"
+  if ! cmp -s "$here/package-lock.json" "$here/node_modules/.installed-lock.json" 2>/dev/null; then
+    PUPPETEER_SKIP_DOWNLOAD=1 npm ci --prefix "$here" --ignore-scripts --no-audit --no-fund --loglevel=error >/dev/null
+    cp "$here/package-lock.json" "$here/node_modules/.installed-lock.json"
+  fi
+}
 if [ -n "${have_all:-}" ]; then
   make_locale "${1:-all}"
   add_deb_src "${1:-all}"
+  node_tools "${1:-all}"
   exit 0
 fi
 export DEBIAN_FRONTEND=noninteractive
@@ -78,3 +97,4 @@ add_deb_src "${1:-all}"
 $SUDO apt-get update -qq
 $SUDO apt-get install -y -qq --no-install-recommends "${packages[@]}" >/dev/null
 make_locale "${1:-all}"
+node_tools "${1:-all}"

@@ -15,10 +15,22 @@
 #   edit, reload and Revert, an unset uniform, no float targets;
 # - lesson_security: a lesson is data from the page's own origin, never run;
 #   the Content-Security-Policy; the packer takes no link;
-# - opening: the page opens drawing the seed; stand-ins in the live view;
+# - opening: the page opens drawing the seed; opened from disk where it
+#   cannot load its module, it says what to do; stand-ins in the live view;
 # - both_shells: the same `glimmer view` commands typed into a window
 #   (under Xvfb) and run in the page say the same and save the same
-#   pictures (one viewer core, issue 25).
+#   pictures (one viewer core, issue 25);
+# - hidpi: devicePixelRatio 2 (the panel drawn at the screen's pixels, the
+#   box the same size) and a finger on the sliders;
+# - layout: at 1366x768 and 1280x720 the picture and the seed's sliders in
+#   view, the editor beside them; a long error moves nothing and does not
+#   widen the panel; the presentation mode larger, still in view;
+# - reload: a reload mid-lesson keeps the picked folder, the script, the
+#   file open in the editor and every slider's value;
+# - engine_chromium, engine_firefox, engine_webkit: the page's checks (the
+#   seed drawn as render draws it, Save PNG, a slider and a live edit, a
+#   typo kept with the picture, a reload keeping the edit) in each of
+#   Chromium, Firefox ESR and WebKitGTK (Safari's engine), under Xvfb.
 # tests/web/page_lib.sh holds what the groups share.
 # Usage: tools/test-web.sh [DESKTOP_GLIMMER] [WEB_BUILD_DIR]
 #        (default build/src/app/glimmer, build-web)
@@ -30,7 +42,8 @@ tools/build-web.sh "$web" >/dev/null || { echo "web build failed (tools/build-we
 log="$(mktemp)"
 trap 'rm -f "$log"' EXIT
 passed=0 failed=0
-for group in check_matches_desktop pictures lessons live_view lesson_security opening both_shells; do
+for group in check_matches_desktop pictures lessons live_view lesson_security opening both_shells hidpi layout reload \
+             engine_chromium engine_firefox engine_webkit; do
   tests/web/$group.sh "$g" "$web" | tee "$log"
   rc=${PIPESTATUS[0]}
   count="$(sed -n "s/^web $group: \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p" "$log" | tail -1)"

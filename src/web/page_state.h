@@ -28,6 +28,11 @@ std::vector<std::string> splitSets(const std::string& text);
 // script is open) and whether a canvas point is on the picture.
 glimmer::ViewerState* viewerState();
 bool pointerOverPicture(float x, float y);
+// The picture's size on the canvas: its own times the page's scale (the
+// panel's `scale`, devicePixelRatio or the projector's presentation mode),
+// in the canvas's pixels, which the input's coordinates are in.
+int shownPictureW();
+int shownPictureH();
 // The panel's keys on the canvas (its buttons name them): R reload, S save,
 // space pause or play, 0 the view reset. True when `key` (DOM's
 // KeyboardEvent.key) is one; its effect comes with the next frame.

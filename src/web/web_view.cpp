@@ -36,6 +36,8 @@
 //   glimmer_view_files() -> the script and its shader files, a line each.
 //   glimmer_view_errors() -> how many errors the panel shows (0: the last load
 //       worked).
+//   glimmer_view_sets() -> every control's value now, "NAME=V;NAME=V1,V2".
+// The panel's width is pinned once measured, so messages never widen it.
 // Input (web_view_input.cpp) comes from the canvas's own events.
 #include <GLES3/gl3.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -88,8 +90,36 @@ struct WebViewer {
     std::string messages;            // the last load's diagnostics, a line each (glimmer_view_messages)
     int keyAsks = 0;         // R and S pressed on the canvas: glimmer_view_frame's answer bits
     bool imguiReady = false;
+    // The panel's width, pinned (issue 27): measured once the panel shows a
+    // good load and no errors (a few frames, as ImGui settles its fit), at
+    // the font size then; a message is then cut at the panel's edge (the
+    // page shows it whole, wrapped, and marks it in its editor) instead of
+    // widening the canvas and pushing the page's editor aside. 0: not yet.
+    int pinnedPanelW = 0;
+    float pinnedFontPx = 0;
+    int calmFrames = 0;
 };
 std::unique_ptr<WebViewer> viewer;
+
+// The page's scale: the panel's fonts and the picture shown at it (the
+// picture's pixels each S x S of the canvas's, nearest), so a
+// devicePixelRatio-2 screen gets a crisp panel at the same size on the
+// page, and the projector's presentation mode a large picture and large
+// sliders (`scale S`, as the window's command). 1 until the page says.
+float gScale = 1.f;
+int shownW(const WebViewer& v) { return int(std::lround(v.width * gScale)); }
+int shownH(const WebViewer& v) { return int(std::lround(v.height * gScale)); }
+WindowLayout layoutOf(const WebViewer& v) { return layoutWindow(shownW(v), shownH(v), true, v.panelW, v.panelH, 8192); }
+
+// Fonts made afresh at `scale` (view/panel.h setUpFonts) and the values box
+// with them; between frames only (ImGui's font texture is remade).
+void applyScale(float scale) {
+    gScale = scale;
+    setUpFonts(scale);
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
+    if (viewer) viewer->core.setValuesTextPx(15.f * scale);
+}
 
 // For the page's editor: each diagnostic as one line of tab-separated
 // fields, severity, file, line, column, message (tabs and line breaks in a
@@ -127,6 +157,12 @@ int load(WebViewer& v, const std::vector<std::string>& sets, std::ostringstream&
     bool loaded = v.core.load(v.width, v.height, diags, sources, &plan);
     printDiagnostics(diags, sources, out);
     v.messages = messageLines(diags);
+    // The panel shows each message's first line (file:line:col: message),
+    // cut at its edge: one line an error, so errors never push the sliders
+    // out of a laptop's window (issue 27). The page shows them whole,
+    // wrapped, under the canvas, and marks them in its editor.
+    for (auto* list : {&v.s.errors, &v.s.warnings})
+        for (auto& m : *list) m.text = m.text.substr(0, m.text.find('\n'));
     if (!plan.programs.empty() || v.files.empty()) v.files = textFilesOf(v.script, plan);
     if (!loaded) {
         v.s.status = "keeping the last good picture";
@@ -159,6 +195,21 @@ void drawChanged(WebViewer& v) {
     for (int p : v.core.takeDrawnPasses()) v.drawn.insert(p);
 }
 
+// The width the panel may take this frame (see WebViewer::pinnedPanelW):
+// the pinned one, or before it is measured (a script whose first load
+// failed) the width its wrapped text takes, so a long error line cannot
+// widen it past that either. A new font size (`scale`) measures again.
+void pinPanelWidth(WebViewer& v) {
+    const float fontPx = ImGui::GetFontSize();
+    if (v.pinnedFontPx != fontPx) {
+        v.pinnedFontPx = fontPx;
+        v.pinnedPanelW = 0;
+        v.calmFrames = 0;
+    }
+    const float most = v.pinnedPanelW > 0 ? float(v.pinnedPanelW) : fontPx * 30 + ImGui::GetStyle().WindowPadding.x * 2;
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0.f, 0.f), ImVec2(most, std::numeric_limits<float>::max()));
+}
+
 int applyAsked(WebViewer& v, const std::vector<ViewCommand>& asked) {
     int out = 0;
     for (const auto& c : asked) {
@@ -175,9 +226,11 @@ int applyAsked(WebViewer& v, const std::vector<ViewCommand>& asked) {
 namespace glimmer_web {
 // The picture's rectangle on the canvas, for the input's drag-to-turn.
 bool pointerOverPicture(float x, float y) {
-    return viewer && x >= 0 && y >= 0 && x < viewer->width && y < viewer->height;
+    return viewer && x >= 0 && y >= 0 && x < shownW(*viewer) && y < shownH(*viewer);
 }
 glimmer::ViewerState* viewerState() { return viewer ? &viewer->s : nullptr; }
+int shownPictureW() { return viewer ? shownW(*viewer) : 0; }
+int shownPictureH() { return viewer ? shownH(*viewer) : 0; }
 
 bool viewerKey(const char* key) {
     if (!viewer || !key) return false;
@@ -227,7 +280,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     WebViewer& v = *viewer;
     ViewerState& s = v.s;
     if (s.playing && seconds > 0 && seconds < 1) s.time += seconds;
-    v.layout = layoutWindow(v.width, v.height, true, v.panelW, v.panelH, 4096);
+    v.layout = layoutOf(v);
     ImGuiIO& io = ImGui::GetIO();
     io.DisplaySize = ImVec2(float(v.layout.windowW), float(v.layout.windowH));
     io.DeltaTime = seconds > 0 && seconds < 1 ? float(seconds) : 1.f / 60.f;
@@ -236,10 +289,12 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     drawChanged(v);
     // The probe, as on the desktop: the values under the pointer, in a tooltip.
     if (!io.WantCaptureMouse && glimmer_web::pointerOverPicture(io.MousePos.x, io.MousePos.y) && !io.MouseDown[0])
-        v.core.probe(io.MousePos.x, io.MousePos.y, v.width, v.height);
+        v.core.probe(io.MousePos.x, io.MousePos.y, shownW(v), shownH(v));
     else
         s.probeText.clear();
+    pinPanelWidth(v);
     auto asked = drawPanelWindow(s, float(v.layout.panelX), float(v.layout.windowH), v.panelW, v.panelH);
+    if (v.pinnedPanelW == 0 && s.good && !s.failed && ++v.calmFrames >= 3) v.pinnedPanelW = v.panelW;
     v.core.drawValues();  // "Show values", over the picture's top left
     for (auto [bit, kind] : {std::pair{1, ViewCommand::Kind::Reload}, std::pair{2, ViewCommand::Kind::Save}})
         if (v.keyAsks & bit) {
@@ -250,17 +305,17 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     v.keyAsks = 0;
     ImGui::Render();
     v.frame->begin(v.layout.windowW, v.layout.windowH, 0.12f, 0.12f, 0.14f);
-    presentPicture(s, v.layout.windowH, 0, 0, v.width, v.height);
+    presentPicture(s, v.layout.windowH, 0, 0, shownW(v), shownH(v));
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
     v.core.noteFrame();  // for `frames`, as the window notes its own
     return applyAsked(v, asked);
 }
 
 EMSCRIPTEN_KEEPALIVE int glimmer_view_width() {
-    return viewer ? layoutWindow(viewer->width, viewer->height, true, viewer->panelW, viewer->panelH, 4096).windowW : 0;
+    return viewer ? layoutOf(*viewer).windowW : 0;
 }
 EMSCRIPTEN_KEEPALIVE int glimmer_view_height() {
-    return viewer ? layoutWindow(viewer->width, viewer->height, true, viewer->panelW, viewer->panelH, 4096).windowH : 0;
+    return viewer ? layoutOf(*viewer).windowH : 0;
 }
 
 EMSCRIPTEN_KEEPALIVE int glimmer_view_set(const char* text) {
@@ -336,6 +391,10 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_command(const char* line) {
         said = "saved " + c->name;
         break;
     case ViewCommand::Kind::Frames: said = viewer->core.frameStats(); break;
+    case ViewCommand::Kind::Scale:
+        applyScale(float(c->value));
+        said = fmt::format("ui scale {:g}", c->value);
+        break;
     case ViewCommand::Kind::Reload: said = "reload"; break;
     default: said = "error: the page has no '" + std::string(line) + "' (the browser's own zoom, help and tab do that)";
     }
@@ -425,6 +484,24 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_files() {
     text.clear();
     if (viewer)
         for (const auto& f : viewer->files) text += f + "\n";
+    return text.c_str();
+}
+
+// Every control's value now, as the page's sets: "NAME=V;NAME=V1,V2,..."
+// (ranges, checkboxes, colours, vectors; the first Program's value of a
+// name). The page keeps it across a reload and gives each back through
+// glimmer_view_set (a value a changed script no longer takes is dropped).
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_sets() {
+    static std::string text;
+    text.clear();
+    if (!viewer || !viewer->s.good || !viewer->s.values) return text.c_str();
+    std::set<std::string> seen;
+    for (const auto& c : mergedUniforms(viewer->s.good->plan)) {
+        if (c.setting->form == UniformSetting::Form::Constant || !seen.insert(c.name).second) continue;
+        std::string values;
+        for (double x : viewer->s.values->get(c.programs.front(), c.name)) values += (values.empty() ? "" : ",") + fmt::format("{}", x);
+        if (!values.empty()) text += (text.empty() ? "" : ";") + c.name + "=" + values;
+    }
     return text.c_str();
 }
 

@@ -1,5 +1,5 @@
-// The page's input for the live viewer: the canvas's own mouse, wheel and
-// key events, handed to ImGui (1.86's io fields) and to glman's mouse on the
+// The page's input for the live viewer: the canvas's own mouse, touch, wheel
+// and key events, handed to ImGui (1.86's io fields) and to glman's mouse on the
 // picture (view/viewer_state.h pointerOnPicture).
 //
 // Why not Emscripten's GLFW port with imgui_impl_glfw, as on the desktop:
@@ -41,15 +41,29 @@ void mods(ImGuiIO& io, bool ctrl, bool shift, bool alt, bool meta) {
     io.KeySuper = meta;
 }
 
+// The canvas's pixels per CSS pixel: the page sizes the canvas's backing
+// store at devicePixelRatio (and the presentation mode's scale) and its
+// box in CSS pixels, while events come in CSS pixels.
+float canvasPixelsPerCssPixel() {
+    int backingW = 0, backingH = 0;
+    double cssW = 0, cssH = 0;
+    if (emscripten_get_canvas_element_size("#canvas", &backingW, &backingH) != EMSCRIPTEN_RESULT_SUCCESS ||
+        emscripten_get_element_css_size("#canvas", &cssW, &cssH) != EMSCRIPTEN_RESULT_SUCCESS || cssW <= 0)
+        return 1.f;
+    return float(backingW / cssW);
+}
+
 EM_BOOL onMouse(int type, const EmscriptenMouseEvent* e, void*) {
     ImGuiIO& io = ImGui::GetIO();
-    float x = float(e->targetX), y = float(e->targetY);
+    const float k = canvasPixelsPerCssPixel();
+    float x = float(e->targetX) * k, y = float(e->targetY) * k;
     io.MousePos = ImVec2(x, y);
     if (type == EMSCRIPTEN_EVENT_MOUSEDOWN && e->button < 3) io.MouseDown[e->button == 1 ? 2 : e->button == 2 ? 1 : 0] = true;
     if (type == EMSCRIPTEN_EVENT_MOUSEUP && e->button < 3) io.MouseDown[e->button == 1 ? 2 : e->button == 2 ? 1 : 0] = false;
     mods(io, e->ctrlKey, e->shiftKey, e->altKey, e->metaKey);
     if (glimmer::ViewerState* s = glimmer_web::viewerState())
-        pointerOnPicture(*s, drag, x, y, io.MouseDown[0], 0.f, io.WantCaptureMouse, 0, 0, s->pictureW, s->pictureH);
+        pointerOnPicture(*s, drag, x, y, io.MouseDown[0], 0.f, io.WantCaptureMouse, 0, 0, glimmer_web::shownPictureW(),
+                         glimmer_web::shownPictureH());
     return type == EMSCRIPTEN_EVENT_MOUSEDOWN;  // no text selection starting on the canvas
 }
 
@@ -58,6 +72,27 @@ EM_BOOL onRelease(int, const EmscriptenMouseEvent* e, void*) {
     if (e->button < 3) ImGui::GetIO().MouseDown[e->button == 1 ? 2 : e->button == 2 ? 1 : 0] = false;
     drag.dragging = false;
     return false;
+}
+
+// A finger on a Chromebook's or tablet's screen is the mouse's left
+// button: the first touch moves the pointer and presses, moving drags a
+// slider or turns the picture, lifting releases. The browser's own use of
+// the touch (scrolling the page, a zoom) is kept off the canvas only while
+// the finger is on the panel or the picture.
+EM_BOOL onTouch(int type, const EmscriptenTouchEvent* e, void*) {
+    if (e->numTouches < 1) return false;
+    const EmscriptenTouchPoint& t = e->touches[0];
+    ImGuiIO& io = ImGui::GetIO();
+    const float k = canvasPixelsPerCssPixel();
+    const float x = float(t.targetX) * k, y = float(t.targetY) * k;
+    io.MousePos = ImVec2(x, y);
+    const bool down = type == EMSCRIPTEN_EVENT_TOUCHSTART || type == EMSCRIPTEN_EVENT_TOUCHMOVE;
+    io.MouseDown[0] = down;
+    if (!down) drag.dragging = false;
+    if (glimmer::ViewerState* s = glimmer_web::viewerState())
+        pointerOnPicture(*s, drag, x, y, down, 0.f, io.WantCaptureMouse, 0, 0, glimmer_web::shownPictureW(),
+                         glimmer_web::shownPictureH());
+    return true;  // the canvas's own: no scroll, no synthesized mouse events after it
 }
 
 EM_BOOL onWheel(int, const EmscriptenWheelEvent* e, void*) {
@@ -69,7 +104,7 @@ EM_BOOL onWheel(int, const EmscriptenWheelEvent* e, void*) {
     bool onPicture = glimmer_web::pointerOverPicture(io.MousePos.x, io.MousePos.y);
     if (s && onPicture)
         pointerOnPicture(*s, drag, io.MousePos.x, io.MousePos.y, io.MouseDown[0], steps, io.WantCaptureMouse, 0, 0,
-                         s->pictureW, s->pictureH);
+                         glimmer_web::shownPictureW(), glimmer_web::shownPictureH());
     return onPicture && s && s->turns;  // the page scrolls unless the wheel zoomed a scene
 }
 
@@ -99,6 +134,10 @@ void setUpCanvasInput() {
     emscripten_set_mouseup_callback(EMSCRIPTEN_EVENT_TARGET_WINDOW, nullptr, false, onRelease);
     emscripten_set_mousemove_callback("#canvas", nullptr, false, onMouse);
     emscripten_set_wheel_callback("#canvas", nullptr, false, onWheel);
+    emscripten_set_touchstart_callback("#canvas", nullptr, false, onTouch);
+    emscripten_set_touchmove_callback("#canvas", nullptr, false, onTouch);
+    emscripten_set_touchend_callback("#canvas", nullptr, false, onTouch);
+    emscripten_set_touchcancel_callback("#canvas", nullptr, false, onTouch);
     emscripten_set_keydown_callback("#canvas", nullptr, false, onKey);
     emscripten_set_keyup_callback("#canvas", nullptr, false, onKey);
 }

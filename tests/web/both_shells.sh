@@ -4,7 +4,9 @@
 # page's live view (glimmerPage.command, tools/page-commands.mjs), must say
 # the same and save the same pictures:
 # - a slider value moved, the heavy blur then redrawn in slices in both
-#   (slice budget 2 ms: `frames` reports more than one slice);
+#   (slice budget 2 ms: `frames` reports more than one slice; the probe
+#   before it finishes the picture, so a loaded machine still slow to draw
+#   it cannot make it look unsliced);
 # - the probe at a pixel gives that pixel's values (the two rasterizers,
 #   llvmpipe and SwiftShader, may differ by a step: 0.02);
 # - "Show values" burns the same box into a saved picture in both;
@@ -22,8 +24,8 @@ cat > "$work/commands" <<'EOF'
 set uAdd 2.5
 set uHalfSize 5
 wait 5000
-frames
 probe 100 200
+frames
 probe 300 40
 values on
 save values.png

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The page as it opens: with nothing asked it draws the seed bloom and
-# lists the lesson's scripts; a script whose image was not handed in opens
+# lists the lesson's scripts; opened from disk where it cannot load its
+# module, it says what to do; a script whose image was not handed in opens
 # in the live view with a stand-in and the warning saying so.
 # Usage: tests/web/opening.sh [DESKTOP_GLIMMER] [WEB_BUILD_DIR]
 #        (the module built already; tests/web/page_lib.sh says what is shared)
@@ -18,6 +19,23 @@ print(verdict.group(1) if verdict else "no verdict", "|", len(options), "scripts
       sum(o.startswith("/lesson:tests/") for o in options), "test scripts")')"
 [[ "$opened" == "scripts/bloom.glib: drawn | "*" scripts, 0 test scripts" ]]
 tally $? "the page opened with nothing asked did not draw the seed, or lists test scripts: $opened"
+
+# Opened from disk as a student double-clicks it (no file-access flag),
+# the page cannot load its module: it says so ON THE PAGE, with what to do
+# (the one-file lesson from tools/web_lesson.py pack --html, or serving the
+# folder with python3 -m http.server), instead of staying blank (issue 27).
+# Its verdict is data-exit 2. (Not page_dom: the page is never ready.)
+said="$(timeout 180 chromium --headless=new --no-sandbox --user-data-dir="$profile" --use-angle=swiftshader \
+          --enable-unsafe-swiftshader --virtual-time-budget=10000 --dump-dom "file://$page" 2>/dev/null | python3 -c '
+import html, re, sys
+dom = sys.stdin.read()
+box = re.search(r"<div id=\"cannot-start\"([^>]*)>(.*?)</div>", dom, re.S)
+verdict = re.search(r"<p id=\"verdict\"([^>]*)>", dom)
+text = re.sub(r"\s+", " ", html.unescape(re.sub(r"<[^>]+>", "", box.group(2)))) if box else ""
+print("shown" if box and "hidden" not in box.group(1) else "hidden", "|",
+      "exit2" if verdict and "data-exit=\"2\"" in verdict.group(1) else "no-exit", "|", text)')"
+[[ "$said" == "shown | exit2 | "*"opened from disk"*"web_lesson.py pack"*"--html"*"python3 -m http.server"* ]]
+tally $? "the page opened from disk without file access must say on the page what to do: $said"
 
 # Stand-ins in the page's live view, as in `glimmer view` (issue 25): a
 # script whose image was not handed in opens, drawn, with the warning that

@@ -8,7 +8,8 @@
 // of each edit; the editor writes the edit into the file system itself, so
 // the next load of the script sees it.
 //
-//   const editor = createGlimmerEditor({ element, tabs, note, readFile, writeFile, onEdit })
+//   const editor = createGlimmerEditor({ element, tabs, note, readFile, writeFile, onEdit, onShow })
+//                                   onShow(path): a file is on show (the page keeps it for a reload)
 //   editor.setFolder(id)            drafts are kept per folder: "lesson", "user:NAME", ...
 //   editor.restoreDrafts(root)      writes this folder's kept edits into the file system
 //   editor.setFiles(root, paths)    the script and its shaders, as tabs
@@ -38,9 +39,10 @@ CodeMirror.defineSimpleMode("glib", {
 // the note, never silently dropped.
 const kDraftPrefix = "glimmer-draft\n";
 
-globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, onEdit }) => {
+globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, onEdit, onShow = () => {} }) => {
   const cm = CodeMirror(element, {
     lineNumbers: true, indentUnit: 4, tabSize: 4, theme: "glimmer",
+    lineWrapping: true,  // a long line wraps in the editor's width: the editor never scrolls sideways
     gutters: ["glimmer-marks", "CodeMirror-linenumbers"],
   });
   let folder = "lesson";
@@ -53,7 +55,7 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
   let originals = {};  // each edited file's text as the folder had it, for Revert
   const key = (path) => kDraftPrefix + folder + "\n" + path;
   const abs = (path) => root + "/" + path;
-  const say = (text, bad = false) => { note.textContent = text; note.className = bad ? "bad" : ""; };
+  const say = (text, bad = false) => { note.textContent = text; note.title = text; note.className = bad ? "bad" : ""; };
 
   const modeOf = (path) => path.endsWith(".glib") ? "glib" : "x-shader/x-fragment";
   const show = (path) => {
@@ -67,6 +69,7 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
     shown = path;
     for (const b of tabs.querySelectorAll("button")) b.classList.toggle("open", b.dataset.path === path);
     mark(lastMessages);
+    onShow(path);
     return true;
   };
 
@@ -102,7 +105,8 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
       const box = document.createElement("div");
       box.className = "glimmer-message glimmer-message-" + m.severity;
       box.textContent = `${m.severity}: ${m.message}`;
-      widgets.push(cm.addLineWidget(line, box, { coverGutter: false, noHScroll: true }));
+      // in the text's column: the editor wraps its lines, so the message wraps there too
+      widgets.push(cm.addLineWidget(line, box, { coverGutter: false }));
     }
   };
 

@@ -17,136 +17,13 @@
 // it (data-frame-ms on #picture); data-first-picture-ms on the body is the
 // time from the start of loading to the first picture. A refused lesson is
 // data-exit="2" and data-lesson="refused" on #verdict, the reason its text.
+// ?present opens in the presentation mode (the Present button's). Opened
+// with none of ?check, ?render, ?view, the page keeps what a reload brings
+// back (see stateKey below).
 "use strict";
-// What a user's folder may hold: checked before anything is written into
-// the module's memory (a dropped folder may be anything).
-const kMaxUserFiles = 2000;
-const kMaxUserBytes = 256 * 1024 * 1024;
-
-// A lesson is DATA, never code: JSON {"files": {"relative/path": "base64",
-// ...}, "name"?: "..."}, parsed with JSON.parse and checked here. A link
-// (?lesson=URL) is something anyone can send, and code run in the page's
-// origin could read the drafts kept in its storage; so a lesson comes only
-// from the page's own origin (a page opened from disk: only from disk), by
-// XMLHttpRequest (Chromium's fetch() cannot read file: URLs), never as a
-// script. A packed page (tools/web_lesson.py pack --html) carries it in a
-// <script type="application/json" id="glimmer-lesson"> data block; a
-// --static folder names lesson.json in <meta name="glimmer-lesson">.
-// base64 of kMaxUserBytes and room for the names.
-const kMaxLessonText = Math.ceil(kMaxUserBytes / 3) * 4 + kMaxUserFiles * 4096;
-// A packed lesson holds at most the packer's 64 MiB of files (web_lesson.py's
-// LIMIT): its gzip block may not inflate past their base64 and names.
-const kMaxPackedLessonText = Math.ceil((64 * 1024 * 1024) / 3) * 4 + kMaxUserFiles * 1024;
-const refusal = (why) => Object.assign(new Error(why), { refusal: true });
-const shownUrl = (text) => JSON.stringify(text.length > 80 ? text.slice(0, 80) + "..." : text);
-const lessonUrlChecked = (text) => {
-  let url;
-  try { url = new URL(text, location.href); } catch { throw refusal("refused: the lesson " + shownUrl(text) + " is not a URL"); }
-  if (location.protocol === "file:") {
-    if (url.protocol !== "file:")
-      throw refusal("refused: the lesson " + shownUrl(text) + " is not on this disk: a page opened from disk loads a lesson only from a file: URL");
-  } else if ((url.protocol !== "http:" && url.protocol !== "https:") || url.origin !== location.origin) {
-    throw refusal("refused: the lesson " + shownUrl(text) + " is not on this page's own site (" + location.origin
-                  + "): a lesson is loaded only from beside the page");
-  }
-  return url;
-};
-const loadLessonText = (url) => new Promise((resolve, reject) => {
-  const cannot = (why) => reject(refusal("cannot load the lesson " + shownUrl(url.href) + ": " + why));
-  const request = new XMLHttpRequest();
-  request.open("GET", url.href);
-  request.overrideMimeType("text/plain; charset=utf-8");  // text to parse, whatever the server calls it
-  request.onprogress = (e) => { if (e.loaded > kMaxLessonText) { request.abort(); cannot("larger than a lesson may be"); } };
-  request.onload = () => {
-    if (url.protocol === "file:" ? request.status !== 0 && request.status !== 200 : request.status !== 200)
-      return cannot("the server answered " + request.status);
-    // A redirect may not take the lesson to another origin.
-    if (url.protocol !== "file:" && new URL(request.responseURL || url.href).origin !== location.origin)
-      return cannot("it was redirected to another site");
-    resolve(request.responseText);
-  };
-  request.onerror = () => cannot(url.protocol === "file:"
-    ? "not readable (from disk, Chromium needs --allow-file-access-from-files; or serve the folder, or pack the lesson with --html)"
-    : "no answer");
-  request.send();
-});
-const base64Bytes = (text) => Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
-// The lesson's text -> { name, files: [[path, Uint8Array], ...] }, or a
-// refusal with the reason; paths are checked where they are mounted.
-const parseLesson = (text, where) => {
-  const notLesson = () => refusal("refused: " + where + ' is not a lesson: JSON {"files": {"path": "base64", ...}} (a lesson is data, never a script)');
-  if (text.length > kMaxLessonText) throw refusal("refused: " + where + " is larger than a lesson may be");
-  let lesson;
-  try { lesson = JSON.parse(text); } catch { throw notLesson(); }
-  const plain = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
-  if (!plain(lesson) || !plain(lesson.files)) throw notLesson();
-  const entries = Object.entries(lesson.files);
-  if (entries.length > kMaxUserFiles) throw refusal("refused: more than " + kMaxUserFiles + " files");
-  let bytes = 0;
-  for (const [path, data] of entries) {
-    if (typeof data !== "string") throw notLesson();
-    bytes += Math.floor(data.length / 4) * 3;
-  }
-  if (bytes > kMaxUserBytes) throw refusal("refused: more than " + kMaxUserBytes / (1024 * 1024) + " MiB");
-  const files = entries.map(([path, data]) => {
-    try { return [path, base64Bytes(data)]; } catch { throw refusal("refused: the file " + JSON.stringify(path) + " of " + where + " is not base64"); }
-  });
-  // The packer lists the lesson's scripts (each once, in its order); a
-  // lesson without the list shows every script it holds.
-  const scripts = Array.isArray(lesson.scripts)
-    ? lesson.scripts.filter((s) => typeof s === "string" && Object.hasOwn(lesson.files, s)).slice(0, kMaxUserFiles) : null;
-  return { name: typeof lesson.name === "string" ? lesson.name.slice(0, 200) : "", files, scripts };
-};
-
-// A packed lesson (tools/web_lesson.py pack) carries its files and the
-// module's WebAssembly in the page itself, as data blocks: it opens from
-// disk, no server.
-const query = new URLSearchParams(location.search);
-const dataBlock = (id) => {
-  const block = document.getElementById(id);
-  return block && block.tagName === "SCRIPT" && block.type !== "" && !/javascript|module/i.test(block.type) ? block : null;
-};
-const packedLesson = dataBlock("glimmer-lesson");
-// A packed page's data blocks are base64 of gzip ("application/gzip": the
-// packer compresses the module and the lesson, 8.5 MB down to under 3) and
-// the browser undoes it natively (DecompressionStream), stopping at `limit`
-// bytes so a hostile block cannot inflate without bound. Older packs wrote
-// plain blocks: those are read as they are.
-const gunzip = async (bytes, limit) => {
-  if (typeof DecompressionStream === "undefined")
-    throw refusal("refused: this browser cannot unpack the packed lesson (no DecompressionStream): use a current browser");
-  const reader = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip")).getReader();
-  const chunks = [];
-  let size = 0;
-  for (let r = await reader.read(); !r.done; r = await reader.read()) {
-    size += r.value.length;
-    if (size > limit) { reader.cancel(); throw refusal("refused: the packed lesson is larger than a lesson may be"); }
-    chunks.push(r.value);
-  }
-  const out = new Uint8Array(size);
-  let at = 0;
-  for (const c of chunks) { out.set(c, at); at += c.length; }
-  return out;
-};
-const blockBytes = (block, limit) =>
-  block.type === "application/gzip" ? gunzip(base64Bytes(block.textContent), limit) : Promise.resolve(base64Bytes(block.textContent));
-const blockText = async (block, limit) =>
-  block.type === "application/gzip" ? new TextDecoder().decode(await blockBytes(block, limit)) : block.textContent;
-const lessonMeta = document.querySelector('meta[name="glimmer-lesson"]');
-const lessonUrl = query.has("lesson") ? query.get("lesson") : lessonMeta ? lessonMeta.content : null;
-// Resolves to { lesson } (null: none) or { refused: reason }.
-const lessonLoaded = (async () => {
-  if (lessonUrl !== null) {
-    const url = lessonUrlChecked(lessonUrl);
-    return parseLesson(await loadLessonText(url), "the lesson " + shownUrl(lessonUrl));
-  }
-  return packedLesson ? parseLesson(await blockText(packedLesson, kMaxPackedLessonText), "the packed lesson") : null;
-})().then((lesson) => ({ lesson }), (e) => ({ refused: e.refusal ? e.message : "refused: the lesson: " + e }));
-const packedWasm = dataBlock("glimmer-wasm");
-const kMaxWasmBytes = 64 * 1024 * 1024;
-const moduleOptions = packedWasm ? blockBytes(packedWasm, kMaxWasmBytes).then((bytes) => ({ wasmBinary: bytes }))
-                                 : Promise.resolve({});
-Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, loaded]) => {
+// What it starts from (glimmer-lesson.js, loaded before it): the lesson,
+// the kept folder and the module's options, each a promise.
+Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoaded, folderKept]).then(([glimmer, loaded, kept]) => {
   // Since the page began to load: the module fetched, compiled and started
   // (PERFORMANCE.md splits the first picture's time at this mark).
   document.body.dataset.moduleReadyMs = performance.now().toFixed(0);
@@ -240,7 +117,53 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
 
   // The diagnostics as the desktop prints them; each "file:line:col:" opens
   // that file at that place in the editor.
+  // Under the canvas, folded: a count ("2 errors, 6 warnings") that opens
+  // to them all, and the first error shown whole, wrapped in the canvas's
+  // width, so a message never moves the picture or the editor.
+  const firstError = document.getElementById("first-error");
+  const allMessages = document.getElementById("all-messages");
+  const messageCount = document.getElementById("message-count");
+  const diagnosticStart = /^[^\s:][^:]*(?::\d+:\d+)?: (error|warning|note):/;
+  const jumpTo = (line) => {
+    const at = /^([^\s:]+):(\d+):(\d+): (error|warning|note):/.exec(line);
+    if (!at) return document.createTextNode(line);
+    const jump = document.createElement("span");
+    jump.className = "jump";
+    jump.textContent = line;
+    jump.title = "open " + at[1] + " at line " + at[2];
+    jump.onclick = () => editor.open(at[1], Number(at[2]), Number(at[3]));
+    return jump;
+  };
+  const foldMessages = (text) => {
+    const lines = text.split(/(?<=\n)/);
+    let errors = 0, warnings = 0, first = null;
+    for (const [i, line] of lines.entries()) {
+      const m = diagnosticStart.exec(line);
+      if (!m) continue;
+      if (m[1] === "error") { if (first === null) first = i; ++errors; } else if (m[1] === "warning") ++warnings;
+    }
+    firstError.textContent = "";
+    if (first !== null) {
+      firstError.append(jumpTo(lines[first]));
+      for (const line of lines.slice(first + 1)) {
+        if (diagnosticStart.test(line) || /^\d+ errors?, \d+ warnings?/.test(line)) break;
+        firstError.append(line);
+      }
+    }
+    const plural = (n, word) => n + " " + word + (n === 1 ? "" : "s");
+    if (errors + warnings > 0) {
+      allMessages.dataset.count = String(errors + warnings);
+      messageCount.textContent = [errors ? plural(errors, "error") : "", warnings ? plural(warnings, "warning") : ""]
+        .filter(Boolean).join(", ") + (errors > 1 || warnings ? ": all messages" : "");
+    } else if (text.trim()) {
+      allMessages.dataset.count = "0";
+      messageCount.textContent = "messages";
+    } else {
+      delete allMessages.dataset.count;
+    }
+  };
   const showDiagnostics = (text) => {
+    foldMessages(text);
     shown.textContent = "";
     for (const line of text.split(/(?<=\n)/)) {
       const at = /^([^\s:]+):(\d+):(\d+): (error|warning|note):/.exec(line);
@@ -264,6 +187,7 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     verdict.className = "bad";
     verdict.textContent = why;
     shown.textContent = "";
+    foldMessages("");
   };
   // "ROOT:PATH" or a bare PATH (under /user when a lesson was loaded, else
   // under /lesson) -> [root, path]; the script runs from its root.
@@ -310,6 +234,7 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     FS.chdir(root);
     canvas.width = width || 512;
     canvas.height = height || 512;
+    canvas.style.width = canvas.style.height = "";  // the live view's box, if any, is not a render's
     const exit = render(path, width, height, sets);
     report(path, exit, "drawn");
     save.disabled = exit !== 0;
@@ -326,6 +251,23 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
   // beside it on the canvas, a frame each time the browser paints. A load
   // with errors keeps the last good picture and the slider values.
   let live = null;  // { root, path, width, height } of the open script
+  // The kept state (see stateKey above).
+  const stateName = "glimmer-state\n" + stateKey;
+  let state = {};
+  try { state = JSON.parse(localStorage.getItem(stateName)) || {}; } catch {}
+  if (typeof state !== "object" || Array.isArray(state)) state = {};
+  if (typeof state.values !== "object" || state.values === null) state.values = {};
+  const keepState = () => { try { localStorage.setItem(stateName, JSON.stringify(state)); } catch {} };
+  const viewSets = glimmer.cwrap("glimmer_view_sets", "string", []);
+  let lastKept = 0;
+  const keepValues = () => {
+    const key = live.root + ":" + live.path, sets = viewSets();
+    if (!sets || state.values[key] === sets) return;
+    delete state.values[key];
+    state.values[key] = sets;  // the newest last: at most 50 scripts' values are kept
+    for (const old of Object.keys(state.values).slice(0, -50)) delete state.values[old];
+    keepState();
+  };
   let lastTick = 0;
   const tick = (now) => {
     if (!live) return;
@@ -333,16 +275,32 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     lastTick = now;
     // The layout's size for the next frame (resizing clears the canvas).
     const w = glimmer._glimmer_view_width(), h = glimmer._glimmer_view_height();
-    if (w > 0 && h > 0 && (canvas.width !== w || canvas.height !== h)) { canvas.width = w; canvas.height = h; }
+    if (w > 0 && h > 0 && (canvas.width !== w || canvas.height !== h)) sizeCanvas(w, h);
     if (asked & 1) runView(live.root + ":" + live.path, live.width, live.height, "");  // Reload: the files as they are now
     if (asked & 6) { keepPicture(); download(asked & 4 ? "glimmer-hardcopy.png" : savedName); }
+    if (restoring && live && now - lastKept > 250) { lastKept = now; keepValues(); }
     requestAnimationFrame(tick);
   };
-  const runView = (value, width, height, sets) => {
+  // The canvas's backing store in its own pixels, its box on the page in
+  // CSS pixels: the same size at every devicePixelRatio (the input maps
+  // back, web_view_input.cpp).
+  let scaled = false;
+  const sizeCanvas = (w, h) => {
+    const ratio = window.devicePixelRatio || 1;
+    canvas.width = w;
+    canvas.height = h;
+    canvas.style.width = w / ratio + "px";
+    canvas.style.height = h / ratio + "px";
+  };
+  // `values`: sets kept from an earlier visit ("NAME=V;..."), each given back
+  // through glimmer_view_set before the first frame (one the script no
+  // longer takes is dropped, never an error).
+  const runView = (value, width, height, sets, values = "") => {
     const [root, path] = locate(value);
     FS.chdir(root);
     const wasLive = live;
     const exit = viewOpen(path, width, height, sets);
+    if (exit === 0) for (const set of values.split(";").filter(Boolean)) viewSet(set);
     report(path, exit, "drawn");
     const files = glimmer.UTF8ToString(glimmer._glimmer_view_files()).split("\n").filter(Boolean);
     if (files.length) editor.setFiles(root, files);
@@ -352,14 +310,19 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     }));
     const shows = exit === 0 || (exit === 1 && glimmer._glimmer_view_snapshot());
     live = shows ? { root, path, width, height } : null;
+    if (shows && restoring) { state.script = root + ":" + path; keepState(); }
     save.disabled = !shows;
     if (!shows) return exit;
     savedName = path.split("/").pop().replace(/\.glib$/, "") + ".png";
     if (!wasLive || wasLive.path !== path || wasLive.root !== root)
       vary.value = glimmer.UTF8ToString(glimmer._glimmer_view_sheet_suggestion());
+    // The panel and the picture at the screen's devicePixelRatio (a Retina
+    // Mac's 2): the canvas's pixels are the screen's, its box the same size
+    // on the page, the panel's text rasterised at that scale, not stretched.
+    if (!scaled && (window.devicePixelRatio || 1) !== 1) viewCommand("scale " + Math.min(4, Math.max(0.5, window.devicePixelRatio)));
+    scaled = true;
     glimmer._glimmer_view_frame(0);  // the first picture, then the canvas at the layout's size
-    canvas.width = glimmer._glimmer_view_width();
-    canvas.height = glimmer._glimmer_view_height();
+    sizeCanvas(glimmer._glimmer_view_width(), glimmer._glimmer_view_height());
     glimmer._glimmer_view_frame(0);
     if (glimmer._glimmer_view_snapshot()) keepPicture();
     if (exit === 0 && !document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
@@ -373,6 +336,7 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     element: document.getElementById("editor"), tabs: document.getElementById("tabs"),
     note: document.getElementById("edit-note"),
     readFile: (path) => FS.readFile(path, { encoding: "utf8" }), writeFile: (path, text) => FS.writeFile(path, text),
+    onShow: (path) => { if (restoring && live) { state.shown = path; keepState(); } },
     onEdit: () => live ? runView(live.root + ":" + live.path, live.width, live.height, "") : runView(select.value, 512, 512, ""),
   });
   // Save file: into the folder opened in place where the browser allows it
@@ -380,6 +344,9 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
   const writeBack = async (path, text) => {
     if (!folderHandle || !live || live.root !== "/user") return false;
     try {
+      // A handle kept from an earlier visit asks again (Save file is the click it needs).
+      if (folderHandle.queryPermission && (await folderHandle.queryPermission({ mode: "readwrite" })) !== "granted" &&
+          (await folderHandle.requestPermission({ mode: "readwrite" })) !== "granted") return false;
       let dir = folderHandle;
       const parts = path.split("/");
       for (const part of parts.slice(0, -1)) dir = await dir.getDirectoryHandle(part);
@@ -413,6 +380,10 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     download(live.path.split("/").pop().replace(/\.glib$/, "") + "-sheet.png");
   };
 
+  // Presentation mode (glimmer-present.js): the Present button, ?present, Esc.
+  const presentation = presentationMode(canvas, viewCommand, () => live !== null);
+  const present = presentation.present;
+
   canvas.tabIndex = 0;  // the panel's text fields take keys once the canvas is clicked
   canvas.addEventListener("mousedown", () => canvas.focus());
   document.getElementById("check").onclick = () => runCheck(select.value);
@@ -442,6 +413,8 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     reload: () => live && runView(live.root + ":" + live.path, live.width, live.height, ""),
     editor: () => editor,
     sheet: (text) => { vary.value = text; document.getElementById("save-sheet").click(); return picture.dataset.png || ""; },
+    // The presentation mode on or off; its factor then (1: off, or not fitted yet).
+    present: (on) => { present(on); return presentation.factor(); },
   };
 
   // A folder picked or dropped: its files, their paths below the folder.
@@ -451,13 +424,37 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
       if (files.length > kMaxUserFiles) break;
       files.push([path, new Uint8Array(await file.arrayBuffer())]);
     }
+    if (!useFolder(files, name, handle)) return;
+    keepFolder(files, name, handle);
+    if (select.length) { select.selectedIndex = 0; runView(select.value, 512, 512, ""); }
+  };
+  // A folder's files into /user, its kept edits on them; false: refused.
+  const useFolder = (files, name, handle) => {
     if (lesson) lesson.scripts = null;  // the picked folder's scripts are listed now, not the lesson's
+    forget.hidden = false;  // a kept folder refused can be forgotten too
     const why = mountUser(files);
-    if (why) { refuse(why); return; }
+    if (why) { refuse(why); return false; }
     folderHandle = handle;
     editor.setFolder("user:" + name);
     editor.restoreDrafts("/user");
-    if (select.length) { select.selectedIndex = 0; runView(select.value, 512, 512, ""); }
+    return true;
+  };
+  // The folder kept for the next visit: its files, and its handle where the
+  // browser can keep one (else the files alone). Storage refused (full,
+  // private browsing) is said in the editor's note.
+  const keepFolder = (files, name, handle) => {
+    if (!restoring || !globalThis.indexedDB) return;
+    const put = (record) => folderStore("readwrite", (s) => s.put(record, stateKey));
+    put({ name, files, handle }).catch(() => put({ name, files, handle: null })).catch((e) => {
+      document.getElementById("edit-note").textContent = "your folder is not kept in this browser for a reload: " + e;
+    });
+  };
+  const forget = document.getElementById("forget-folder");
+  forget.onclick = async () => {
+    try { await folderStore("readwrite", (s) => s.delete(stateKey)); } catch {}
+    delete state.script; delete state.shown;
+    keepState();
+    location.reload();
   };
   // webkitRelativePath is "folder/sub/file": the picked folder's own name goes.
   document.getElementById("folder").onchange = (e) =>
@@ -529,13 +526,22 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
     document.body.dataset.ready = "1";
     return;
   }
-  // Opened with no script named, the page draws one: a lesson's first
-  // script, or the bundled seed bloom (issue 27: it was blank until Draw).
-  if (!query.get("check") && !query.get("render") && !query.get("view") && select.length) {
+  // A reload brings back the folder kept in this browser (issue 27).
+  if (restoring && kept && Array.isArray(kept.files) && typeof kept.name === "string")
+    useFolder(kept.files, kept.name, kept.handle || null);
+  // Opened with no script named, the page draws one: the script on show
+  // before a reload, with its sliders' values and the file that was open in
+  // the editor; else a lesson's first script, or the bundled seed bloom
+  // (issue 27: it was blank until Draw).
+  if (restoring && select.length) {
     const seed = [...select.options].find((o) => o.value === "/lesson:scripts/bloom.glib");
-    if (!lesson && seed) select.value = seed.value;
-    runView(select.value, 512, 512, "");
+    const wasShown = state.shown;
+    if ([...select.options].some((o) => o.value === state.script)) select.value = state.script;
+    else if (!lesson && seed) select.value = seed.value;
+    runView(select.value, 512, 512, "", typeof state.values[select.value] === "string" ? state.values[select.value] : "");
+    if (wasShown && [...document.querySelectorAll("#tabs button")].some((b) => b.dataset.path === wasShown)) editor.open(wasShown);
   }
+  if (query.has("present")) present(true);
   if (query.get("check")) runCheck(query.get("check"));
   if (query.get("render")) {
     const [w, h] = (query.get("size") || "512x512").split("x").map(Number);
@@ -555,6 +561,28 @@ Promise.all([moduleOptions.then(createGlimmer), lessonLoaded]).then(([glimmer, l
   // --allow-file-access-from-files or a packed lesson).
   const verdict = document.getElementById("verdict");
   verdict.className = "bad";
-  verdict.textContent = "the page could not start: " + e + (location.protocol === "file:"
-    ? " (opened from disk, Chromium needs --allow-file-access-from-files; or serve the folder, or pack the lesson with --html)" : "");
+  verdict.dataset.exit = "2";
+  verdict.textContent = "the page could not start: " + e;
+  // Opened from disk (a double-click on index.html), the browser does not
+  // let the page read glimmer-web.wasm beside it: what to do instead.
+  const box = document.getElementById("cannot-start");
+  box.hidden = false;
+  document.getElementById("work").style.display = "none";  // an empty canvas and editor say nothing
+  box.dataset.fromDisk = location.protocol === "file:" ? "1" : "0";
+  const say = (html) => { box.innerHTML = html; };
+  if (location.protocol === "file:") {
+    say(`<strong>This page was opened from disk, and the browser will not let it load its WebAssembly module
+      (glimmer-web.wasm) from there.</strong> Do one of these:
+      <ul><li>Open the one-file lesson instead: your teacher makes it with
+        <code>python3 tools/web_lesson.py pack LESSON_FOLDER build-web/src/web --html lesson.html</code>; it opens from
+        disk with a double-click, in any browser.</li>
+      <li>Or serve this folder: in a terminal in the folder that holds this index.html, run
+        <code>python3 -m http.server</code> and open <code>http://localhost:8000/</code>.</li>
+      <li>(Chromium only: start it with <code>--allow-file-access-from-files</code>.)</li></ul>`);
+  } else {
+    say(`<strong>The page could not start.</strong> This browser may lack WebAssembly or WebGL 2: use a current
+      Chrome, Edge, Firefox or Safari.`);
+  }
+  box.append(document.createElement("small"));
+  box.lastChild.textContent = "(" + e + ")";
 });
