@@ -76,6 +76,9 @@ void addBatchCommand(CLI::App& app, BatchOptions& o) {
     sub->add_option("--look-ssim", o.lookSsim, "grading: SSIM at the worst setting below which a submission is "
                                                "wrong rather than worth a look")
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
+    sub->add_option("--look-psnr", o.lookPsnr, "grading: PSNR (dB) at every setting below which a submission is "
+                                               "wrong rather than worth a look")
+        ->capture_default_str()->check(CLI::Range(0.0, 200.0));
 }
 
 namespace {

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
@@ -35,9 +36,9 @@ namespace fs = std::filesystem;
 namespace {
 
 std::string thresholdsText(const Thresholds& t) {
-    return fmt::format("pass: SSIM ≥ {:g} and PSNR ≥ {:g} dB at every setting; look: SSIM ≥ {:g} at the worst; "
-                       "score: 100 × the worst SSIM",
-                       t.passSsim, t.passPsnr, t.lookSsim);
+    return fmt::format("pass: SSIM ≥ {:g} and PSNR ≥ {:g} dB at every setting; look: SSIM ≥ {:g} at the worst "
+                       "and PSNR ≥ {:g} dB at every setting; score: 100 × the worst SSIM",
+                       t.passSsim, t.passPsnr, t.lookSsim, t.lookPsnr);
 }
 
 std::vector<Slider> slidersOf(const Plan& plan) {
@@ -99,6 +100,10 @@ double gradingTimeLimit(const BatchResult& solution, std::string& how) {
         total += limit;
         each += fmt::format("{}{:.0f}", each.empty() ? "" : ", ", limit);
     }
+    // Whole seconds, up: the limit said here is the one a stop names (the
+    // generated class's endless loop, on a loaded machine, was "stopped
+    // after 80.2667 s (--timeout 80.2667)" where this line said 80 s).
+    total = std::ceil(total);
     how = fmt::format("each submission may take {:.0f} s: per setting the larger of {:g} s and {:g} x the "
                       "solution's own time there ({} s), and the same for preparing ({:.0f} s); --timeout sets "
                       "another", total, kFloorSeconds, kTimesSolution, each,
@@ -158,7 +163,21 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         std::erase_if(subs, [&](const Submission& sub) { return fs::equivalent(sub.path, o.outputDir, ec); });
     }
     // A student who handed in twice (a folder and a zip of it): both are
-    // graded, and said, never silently as NAME-2 (issue 29).
+    // graded, and said, never silently as NAME-2 (issue 29): here, and in
+    // each of their rows, where the teacher reads (the generated class of
+    // tools/grading-class.py: lena and lena-2 were two plain passes).
+    std::map<std::string, std::string> handedInTwice;  // submission path -> the note its row takes
+    for (size_t i = 0, j = 0; i < subs.size(); i = j) {
+        std::string files;
+        for (j = i; j < subs.size() && subs[j].name == subs[i].name; ++j) {
+            fs::path p = fs::path(subs[j].path).lexically_normal();
+            if (p.filename().empty()) p = p.parent_path();  // "class/lena/"
+            files += (files.empty() ? "" : ", ") + p.filename().string();
+        }
+        if (j - i > 1)
+            for (size_t k = i; k < j; ++k)
+                handedInTwice[subs[k].path] = fmt::format("handed in more than once ({}); each is a row of its own", files);
+    }
     for (size_t i = 1; i < subs.size(); ++i)
         if (subs[i].name == subs[i - 1].name && (i < 2 || subs[i - 2].name != subs[i].name)) {
             std::string paths;
@@ -193,6 +212,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         settings = settingsFromSliders(slidersOf(solution.plan));
     }
     Thresholds thresholds{o.passSsim, o.passPsnr, o.lookSsim};
+    thresholds.lookPsnr = o.lookPsnr;
     const fs::path out(o.outputDir), pictures = out / "pictures", unpacked = out / "unpacked";
     std::error_code ec;
     fs::create_directories(pictures, ec);
@@ -281,6 +301,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     if (studentSettings.timeoutSeconds <= 0) {  // on by default when grading
         std::string how;
         studentSettings.timeoutSeconds = gradingTimeLimit(solved[0], how);
+        studentSettings.timeoutSaid = "the time limit of grading; --timeout sets another";
         std::cerr << "glimmer: grading: " << how << "\n";
     }
     std::vector<Image> solutionPictures(settings.size());
@@ -294,6 +315,8 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     auto keep = [&](GradeRow r) {
         // Nothing to compare: still show what was asked for (the solution at its defaults).
         if (r.solution.empty()) r.solution = fs::relative(solutionJob.outputs[0], out, ec).string();
+        if (auto twice = handedInTwice.find(r.submission); twice != handedInTwice.end())
+            r.notes += (r.notes.empty() ? "" : "; ") + twice->second;
         rows.push_back(r);
         recordOut << gradeRecord(r) << "\n";
         recordOut.flush();

@@ -187,7 +187,7 @@ Verdict judge(const std::vector<Comparison>& perSetting, const std::vector<std::
                                     100 * perSetting[worst].offShare, kLocalLevels, kTileSide, kTileSide,
                                     perSetting[worst].worstTile));
     } else if (minSsim >= t.passSsim && minPsnr >= t.passPsnr) v.kind = missing.empty() ? "pass" : "look";
-    else if (minSsim >= t.lookSsim && !blank) v.kind = "look";
+    else if (minSsim >= t.lookSsim && minPsnr >= t.lookPsnr && !blank) v.kind = "look";
     else v.kind = "wrong";
     if (v.kind != "pass" && notes.empty())
         notes.push_back(fmt::format("SSIM {:.3f}, PSNR {:.1f} dB at the worst setting", minSsim, minPsnr));

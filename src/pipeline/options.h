@@ -63,7 +63,7 @@ struct BatchOptions : CommonOptions {
     bool resume = false;            // --resume: keep what -o already holds, grade only the rest
     std::vector<std::string> only;  // --only NAME: regrade these students into what -o already holds
     std::string overrides;          // --overrides FILE: the teacher's scores and comments (grade/overrides.h)
-    double passSsim = 0.95, passPsnr = 30, lookSsim = 0.70;
+    double passSsim = 0.95, passPsnr = 30, lookSsim = 0.70, lookPsnr = 18;
 };
 
 // glimmer batch-merge: the shards of a grading job array joined into one report.

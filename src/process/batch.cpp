@@ -468,8 +468,10 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
             if (const double ms = ranMs(w); w.job >= 0 && s.timeoutSeconds > 0 && ms > s.timeoutSeconds * 1000) {
                 long job = w.job;
                 retire(w, true);
-                fail(job, fmt::format("{}: error: stopped after {:g} s (--timeout {:g})\n", jobs[size_t(job)].script,
-                                      s.timeoutSeconds, s.timeoutSeconds), ms);
+                fail(job, fmt::format("{}: error: stopped after {:g} s ({})\n", jobs[size_t(job)].script,
+                                      s.timeoutSeconds,
+                                      s.timeoutSaid.empty() ? fmt::format("--timeout {:g}", s.timeoutSeconds)
+                                                            : s.timeoutSaid), ms);
                 if (next < jobs.size()) assign(w);
             }
         }

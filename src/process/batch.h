@@ -42,6 +42,9 @@ struct BatchSettings {
     bool sandbox = false;
     std::uint64_t maxMemoryMiB = 0;
     double timeoutSeconds = 0;     // per script; 0: none
+    // How a stop names the limit, in parentheses after "stopped after N s";
+    // empty: "--timeout N" (grading's own default limit is no --timeout).
+    std::string timeoutSaid;
     bool strict = false;           // a target with NaN, Inf, negatives or out-of-range values fails the script
     int jobs = 2;                  // worker processes
 };

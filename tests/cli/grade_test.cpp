@@ -271,6 +271,7 @@ TEST(CliGrade, ResumeWithAnotherSolutionThresholdsOrSandboxIsRefused) {
              {resume({"--pass-ssim", "0.9"}), refused},
              {resume({"--pass-psnr", "25"}), refused},
              {resume({"--look-ssim", "0.5"}), refused},
+             {resume({"--look-psnr", "25"}), refused},
              {resume({"--no-sandbox"}), noSandbox + refused}}) {
         auto r = runGlimmer(args, 120);
         EXPECT_EQ(r.exitCode, 2) << r.err;
@@ -424,6 +425,9 @@ TEST(CliGrade, ATimeLimitIsOnByDefaultAndSaysHowItWasChosen) {
     auto rows = csvRows(dir.path() / "out" / "grades.csv");
     EXPECT_EQ(rows["slow"].substr(0, rows["slow"].find(',', rows["slow"].find('|'))),
               "0,error,,|timed out at setting defaults (1 of 2)");
+    // The stop names the limit it was stopped by: no --timeout was given.
+    EXPECT_NE(rows["slow"].find(": error: stopped after 30 s (the time limit of grading; --timeout sets another)"),
+              std::string::npos) << rows["slow"];
 }
 
 // Issue 29: a report a teacher can act on and hand back. Every row links
@@ -564,6 +568,11 @@ TEST(CliGrade, NamesKeepTheirLettersAndATwiceHandedInStudentIsSaid) {
     EXPECT_EQ(students, (std::vector<std::string>{"J\xc3\xb6rgen_Gro\xc3\x9f", "J\xc3\xbcrgen_Gro\xc3\x9f", "ann",
                                                   "ann-2", "\xe6\x9d\x8e\xe9\x9b\xb7"}));
     for (const auto& [who, row] : rows) EXPECT_EQ(row.substr(0, 9), "100,pass,") << who;
+    // And said in both rows, where the teacher reads (the generated class: two plain passes).
+    for (const char* who : {"ann", "ann-2"})
+        EXPECT_EQ(rows[who].substr(rows[who].find('|') + 1),
+                  "\"handed in more than once (ann, ann.zip); each is a row of its own\",") << who;
+    EXPECT_EQ(rows["\xe6\x9d\x8e\xe9\x9b\xb7"].substr(rows["\xe6\x9d\x8e\xe9\x9b\xb7"].find('|') + 1), ",");
 }
 
 TEST(CliGrade, FoldersAreGradedOnlyAgainstASolution) {

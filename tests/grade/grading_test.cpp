@@ -126,6 +126,41 @@ TEST(Grading, ThePassNeedsBothSsimAndPsnr) {
     EXPECT_EQ(judge({c}, {}, t, worst).kind, "look");
 }
 
+// A look needs the picture within reach too: PSNR >= 18 dB (an RMS error of
+// 32 levels) at every setting. SSIM of the luma forgives brightness over flat
+// regions: in the generated class of tools/grading-class.py a submission
+// painted for the default setting (no slider read by a shader) kept SSIM
+// 0.754 at uThreshold=0.1, 13.6 dB from the solution, and was a "look".
+TEST(Grading, ALookNeedsThePictureWithinAnEighthOfTheRange) {
+    Thresholds t;
+    size_t worst = 9;
+    Comparison perfect{INFINITY, 1.0, false};
+    Verdict v = judge({perfect, {13.6, 0.754, false}}, {}, t, worst);
+    EXPECT_EQ(v.kind, "wrong");
+    EXPECT_EQ(v.score, 75);
+    EXPECT_EQ(worst, 1u);
+    EXPECT_EQ(v.notes, "SSIM 0.754, PSNR 13.6 dB at the worst setting");
+    EXPECT_EQ(judge({perfect, {18, 0.754, false}}, {}, t, worst).kind, "look");    // exactly at the threshold
+    EXPECT_EQ(judge({perfect, {17.9, 0.99, false}}, {}, t, worst).kind, "wrong");  // however close by SSIM
+    // Every setting counts, not only the one with the worst SSIM.
+    EXPECT_EQ(judge({{17, 0.99, false}, {25, 0.8, false}}, {}, t, worst).kind, "wrong");
+    Thresholds lenient = t;
+    lenient.lookPsnr = 10;  // --look-psnr 10
+    EXPECT_EQ(judge({perfect, {13.6, 0.754, false}}, {}, lenient, worst).kind, "look");
+
+    // On pictures: 20 levels brighter everywhere is still worth a look (about
+    // 22 dB), 45 levels brighter is wrong (about 15 dB), SSIM near 1 for both.
+    Image solution = gradient(64, 64);
+    for (int levels : {20, 45}) {
+        Image brighter = solution;
+        for (size_t i = 0; i < brighter.u8.size(); ++i)
+            if (i % 4 != 3) brighter.u8[i] = std::uint8_t(std::min(255, brighter.u8[i] + levels));
+        Comparison c = comparePictures(brighter, solution);
+        ASSERT_GE(c.ssim, t.lookSsim) << levels;
+        EXPECT_EQ(judge({c}, {}, t, worst).kind, levels == 20 ? "look" : "wrong") << levels << " levels: " << c.psnr << " dB";
+    }
+}
+
 // Issue 29: what a mean misses. A 4x4 patch 40 levels off in a 64x64
 // gradient is 16 of 4096 pixels (0.39%) off by more than kLocalLevels and
 // one tile far below the rest, while SSIM and PSNR alone would pass it;
