@@ -52,9 +52,15 @@ fi
 # test_cli runs the sanitized glimmer as a child and compares its stderr
 # exactly, so LeakSanitizer must not print its "Suppressions used" table
 # there; a real report still changes the child's stderr and exit status and
-# fails the test that ran it.
+# fails the test that ran it. use_tls=0: LeakSanitizer's walk of the
+# threads' dynamic TLS crashed its own tracer ("Tracer caught signal 11:
+# addr=0x18d0") at the exit of `render --dump --backend osmesa` started from
+# test_cli, every time, yet never from a shell (measured 2026-11-27: the
+# walk reads llvmpipe's threads' DTV after OSMesa's dlopen, and what it
+# finds there depends on the layout). With use_tls=0 TLS is not a root, so
+# an object only TLS points to would be reported: stricter, not laxer.
 echo "sanitize-ci: test_cli (children on their default backend)"
-(cd build-asan/tests && LSAN_OPTIONS="$LSAN_OPTIONS:print_suppressions=0" ./test_cli --gtest_brief=1)
+(cd build-asan/tests && LSAN_OPTIONS="$LSAN_OPTIONS:print_suppressions=0:use_tls=0" ./test_cli --gtest_brief=1)
 # test_viewer runs the sanitized glimmer's window under xvfb-run. At exit,
 # GLFW's glfwTerminate dlcloses libGL, which unloads Mesa's libglapi.so.0
 # (255 strdup'd names, 5323 bytes) and swrast_dri.so (the 240 bytes above);
