@@ -15,6 +15,19 @@ const WebSocket = createRequire(import.meta.url)("ws");
 
 export const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
 
+// A click as a student makes one, at `at` ({ x, y } in CSS pixels): the
+// pointer moved there, pressed, released, each followed by `settle()` so
+// the page sees them in frames of their own (the panel needs the hover
+// before the press).
+export async function clickAt(page, at, settle = () => sleep(300)) {
+  await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", ...at });
+  await settle();
+  await page.send("Input.dispatchMouseEvent", { type: "mousePressed", button: "left", buttons: 1, clickCount: 1, ...at });
+  await settle();
+  await page.send("Input.dispatchMouseEvent", { type: "mouseReleased", button: "left", buttons: 0, clickCount: 1, ...at });
+  await settle();
+}
+
 // Starts Chromium on `url` and resolves once the page says it is ready
 // (data-ready on the body). Gives up after `seconds` with exit status 1.
 export async function openPage(url, seconds = 120) {

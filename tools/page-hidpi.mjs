@@ -6,7 +6,7 @@
 // object: { backing: [w, h], box: [w, h], value, control: [x, y, w, h] }.
 //   NODE_PATH=/usr/share/nodejs node tools/page-hidpi.mjs PAGE_URL SCRIPT RATIO NAME FRACTION OUT.png
 import { writeFileSync } from "node:fs";
-import { openPage, sleep } from "./cdp-page.mjs";
+import { clickAt, openPage, sleep } from "./cdp-page.mjs";
 
 const [url, script, ratio, name, fraction, out] = process.argv.slice(2);
 if (!out) {
@@ -33,10 +33,7 @@ if (process.env.TOUCH) {
     await sleep(300);
   }
 } else {
-  for (const [type, buttons] of [["mouseMoved", 0], ["mousePressed", 1], ["mouseReleased", 0]]) {
-    await page.send("Input.dispatchMouseEvent", { type, button: "left", buttons, clickCount: 1, ...at });
-    await sleep(300);
-  }
+  await clickAt(page, at);
 }
 const value = await page.evaluate(`glimmerPage.value(${JSON.stringify(name)})`);
 const shot = await page.send("Page.captureScreenshot", { format: "png" });

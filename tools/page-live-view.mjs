@@ -19,7 +19,7 @@
 // along the slider the mouse presses (0 its left end, 1 its right).
 import { existsSync, readdirSync, writeFileSync } from "node:fs";
 import { join } from "node:path";
-import { openPage, sleep } from "./cdp-page.mjs";
+import { clickAt, openPage, sleep } from "./cdp-page.mjs";
 
 const [url, script, shader, line, outDir, ...drags] = process.argv.slice(2);
 if (!drags.length) {
@@ -44,12 +44,7 @@ for (const drag of drags) {
   if (w === undefined) { console.error(`no control ${name} in the panel`); page.close(1); }
   const at = { x: canvasAt[0] + x + Number(fraction) * w, y: canvasAt[1] + y + h / 2 };
   await page.evaluate("glimmerPage.drawn()");  // what was drawn before this slider: forgotten
-  await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", ...at });
-  await frames();
-  await page.send("Input.dispatchMouseEvent", { type: "mousePressed", button: "left", buttons: 1, clickCount: 1, ...at });
-  await frames();
-  await page.send("Input.dispatchMouseEvent", { type: "mouseReleased", button: "left", buttons: 0, clickCount: 1, ...at });
-  await frames();
+  await clickAt(page, at, frames);
   // What the frames since the press drew: the passes this slider reaches.
   const drawn = await page.evaluate("glimmerPage.drawn()");
   const value = await page.evaluate(`glimmerPage.value(${JSON.stringify(name)})`);
@@ -64,12 +59,7 @@ if (process.env.PROBE) {
   const [px, py] = process.env.PROBE.split(",").map(Number);
   const [x, y, w, h] = await page.evaluate(`glimmerPage.control("Probe")`);
   const box = { x: canvasAt[0] + x + 8, y: canvasAt[1] + y + h / 2 };
-  await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", ...box });
-  await frames();  // the panel sees the pointer, the press and the release each in frames of their own
-  await page.send("Input.dispatchMouseEvent", { type: "mousePressed", button: "left", buttons: 1, clickCount: 1, ...box });
-  await frames();
-  await page.send("Input.dispatchMouseEvent", { type: "mouseReleased", button: "left", buttons: 0, clickCount: 1, ...box });
-  await frames();
+  await clickAt(page, box, frames);  // the panel sees the pointer, the press and the release each in frames of their own
   const over = { x: canvasAt[0] + px + 0.5, y: canvasAt[1] + py + 0.5 };
   await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", ...over });
   await frames();

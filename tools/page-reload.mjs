@@ -10,7 +10,7 @@
 // the comment, each slider's value (glimmerPage.value), the scripts listed,
 // and the picture (a data URL).
 //   NODE_PATH=/usr/share/nodejs node tools/page-reload.mjs PAGE_URL FOLDER SCRIPT SHADER NAME=FRACTION...
-import { openPage, sleep } from "./cdp-page.mjs";
+import { clickAt, openPage, sleep } from "./cdp-page.mjs";
 
 const [url, folder, script, shader, ...drags] = process.argv.slice(2);
 if (!drags.length) {
@@ -63,12 +63,7 @@ for (const drag of drags) {
     return w === undefined ? null : { x: box.left + (x + ${Number(fraction)} * w) * k, y: box.top + (y + h / 2) * k };
   })()`);
   if (!at) { console.error(`no control ${name} in the panel`); page.close(1); }
-  await page.send("Input.dispatchMouseEvent", { type: "mouseMoved", ...at });
-  await frames();
-  await page.send("Input.dispatchMouseEvent", { type: "mousePressed", button: "left", buttons: 1, clickCount: 1, ...at });
-  await frames();
-  await page.send("Input.dispatchMouseEvent", { type: "mouseReleased", button: "left", buttons: 0, clickCount: 1, ...at });
-  await frames();
+  await clickAt(page, at, frames);
 }
 // SHADER's tab clicked, a comment typed at its end.
 await page.evaluate(`[...document.querySelectorAll("#tabs button")].find((b) => b.dataset.path === ${JSON.stringify(shader)}).click();
