@@ -92,12 +92,14 @@ std::string sliderDifferences(const std::vector<std::string>& student, const std
 // (so a loaded machine slows both alike), and as much again for preparing
 // (issue 29: a correct blur took 11.8 s on a loaded machine).
 constexpr double kFloorSeconds = 10, kTimesSolution = 20;
-double gradingTimeLimit(const BatchResult& solution, std::string& how) {
+double gradingTimeLimit(const BatchResult& solution, std::string& how, std::vector<double>& deadlines) {
     double total = std::max(kFloorSeconds, kTimesSolution * solution.prepareMs / 1000);
     std::string each;
+    deadlines.clear();
     for (double ms : solution.settingMs) {
         const double limit = std::max(kFloorSeconds, kTimesSolution * ms / 1000);
         total += limit;
+        deadlines.push_back(std::ceil(total));  // setting k done by then, counted from the job's start
         each += fmt::format("{}{:.0f}", each.empty() ? "" : ", ", limit);
     }
     // Whole seconds, up: the limit said here is the one a stop names (the
@@ -105,8 +107,9 @@ double gradingTimeLimit(const BatchResult& solution, std::string& how) {
     // after 80.2667 s (--timeout 80.2667)" where this line said 80 s).
     total = std::ceil(total);
     how = fmt::format("each submission may take {:.0f} s: per setting the larger of {:g} s and {:g} x the "
-                      "solution's own time there ({} s), and the same for preparing ({:.0f} s); --timeout sets "
-                      "another", total, kFloorSeconds, kTimesSolution, each,
+                      "solution's own time there ({} s), and the same for preparing ({:.0f} s), each setting "
+                      "stopped once it runs past its share and the earlier ones' (not one limit for the whole); "
+                      "--timeout sets another", total, kFloorSeconds, kTimesSolution, each,
                       std::max(kFloorSeconds, kTimesSolution * solution.prepareMs / 1000));
     return total;
 }
@@ -300,7 +303,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     BatchSettings studentSettings = base;
     if (studentSettings.timeoutSeconds <= 0) {  // on by default when grading
         std::string how;
-        studentSettings.timeoutSeconds = gradingTimeLimit(solved[0], how);
+        studentSettings.timeoutSeconds = gradingTimeLimit(solved[0], how, studentSettings.settingDeadlines);
         studentSettings.timeoutSaid = "the time limit of grading; --timeout sets another";
         std::cerr << "glimmer: grading: " << how << "\n";
     }

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cmath>
 #include <cstring>
 #include <cstdio>
@@ -465,11 +466,20 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
                 }
                 continue;
             }
-            if (const double ms = ranMs(w); w.job >= 0 && s.timeoutSeconds > 0 && ms > s.timeoutSeconds * 1000) {
+            // The limit now: the whole job's, or (grading) that of the setting it is drawing.
+            double limit = s.timeoutSeconds;
+            if (w.job >= 0 && !s.settingDeadlines.empty() &&
+                s.settingDeadlines.size() == jobs[size_t(w.job)].outputs.size()) {
+                const auto& outputs = jobs[size_t(w.job)].outputs;
+                size_t drawn = 0;
+                std::error_code ec;
+                while (drawn + 1 < outputs.size() && std::filesystem::exists(outputs[drawn], ec)) ++drawn;
+                limit = s.settingDeadlines[drawn];
+            }
+            if (const double ms = ranMs(w); w.job >= 0 && limit > 0 && ms > limit * 1000) {
                 long job = w.job;
                 retire(w, true);
-                fail(job, fmt::format("{}: error: stopped after {:g} s ({})\n", jobs[size_t(job)].script,
-                                      s.timeoutSeconds,
+                fail(job, fmt::format("{}: error: stopped after {:g} s ({})\n", jobs[size_t(job)].script, limit,
                                       s.timeoutSaid.empty() ? fmt::format("--timeout {:g}", s.timeoutSeconds)
                                                             : s.timeoutSaid), ms);
                 if (next < jobs.size()) assign(w);

@@ -45,6 +45,11 @@ struct BatchSettings {
     // How a stop names the limit, in parentheses after "stopped after N s";
     // empty: "--timeout N" (grading's own default limit is no --timeout).
     std::string timeoutSaid;
+    // Grading: a limit per setting instead of one for the whole job. Entry
+    // k is the time (s, from the job's start) by which its setting k must be
+    // drawn; while a job has written k of its outputs (they are written in
+    // order) it may run until entry k. Empty: timeoutSeconds alone.
+    std::vector<double> settingDeadlines;
     bool strict = false;           // a target with NaN, Inf, negatives or out-of-range values fails the script
     int jobs = 2;                  // worker processes
 };

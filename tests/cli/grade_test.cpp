@@ -419,14 +419,17 @@ TEST(CliGrade, ATimeLimitIsOnByDefaultAndSaysHowItWasChosen) {
     auto r = runGlimmer(args, 120);
     EXPECT_EQ(r.exitCode, 1) << r.err;
     EXPECT_NE(r.err.find("glimmer: grading: each submission may take 30 s: per setting the larger of 10 s and 20 x "
-                         "the solution's own time there (10, 10 s), and the same for preparing (10 s); --timeout sets "
-                         "another"),
+                         "the solution's own time there (10, 10 s), and the same for preparing (10 s), each setting "
+                         "stopped once it runs past its share and the earlier ones' (not one limit for the whole); "
+                         "--timeout sets another"),
               std::string::npos) << r.err;
     auto rows = csvRows(dir.path() / "out" / "grades.csv");
     EXPECT_EQ(rows["slow"].substr(0, rows["slow"].find(',', rows["slow"].find('|'))),
               "0,error,,|timed out at setting defaults (1 of 2)");
-    // The stop names the limit it was stopped by: no --timeout was given.
-    EXPECT_NE(rows["slow"].find(": error: stopped after 30 s (the time limit of grading; --timeout sets another)"),
+    // The stop names the limit it was stopped by: no --timeout was given; and
+    // it came at the first setting's deadline (preparing and that setting:
+    // 20 s), not at the whole submission's 30.
+    EXPECT_NE(rows["slow"].find(": error: stopped after 20 s (the time limit of grading; --timeout sets another)"),
               std::string::npos) << rows["slow"];
 }
 
