@@ -93,7 +93,8 @@ std::string sliderDifferences(const std::vector<std::string>& student, const std
 // (issue 29: a correct blur took 11.8 s on a loaded machine).
 constexpr double kFloorSeconds = 10, kTimesSolution = 20;
 double gradingTimeLimit(const BatchResult& solution, std::string& how, std::vector<double>& deadlines) {
-    double total = std::max(kFloorSeconds, kTimesSolution * solution.prepareMs / 1000);
+    const double prepare = std::max(kFloorSeconds, kTimesSolution * solution.prepareMs / 1000);
+    double total = prepare;
     std::string each;
     deadlines.clear();
     for (double ms : solution.settingMs) {
@@ -109,8 +110,7 @@ double gradingTimeLimit(const BatchResult& solution, std::string& how, std::vect
     how = fmt::format("each submission may take {:.0f} s: per setting the larger of {:g} s and {:g} x the "
                       "solution's own time there ({} s), and the same for preparing ({:.0f} s), each setting "
                       "stopped once it runs past its share and the earlier ones' (not one limit for the whole); "
-                      "--timeout sets another", total, kFloorSeconds, kTimesSolution, each,
-                      std::max(kFloorSeconds, kTimesSolution * solution.prepareMs / 1000));
+                      "--timeout sets another", total, kFloorSeconds, kTimesSolution, each, prepare);
     return total;
 }
 
@@ -171,25 +171,19 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     // tools/grading-class.py: lena and lena-2 were two plain passes).
     std::map<std::string, std::string> handedInTwice;  // submission path -> the note its row takes
     for (size_t i = 0, j = 0; i < subs.size(); i = j) {
-        std::string files;
+        std::string files, paths;
         for (j = i; j < subs.size() && subs[j].name == subs[i].name; ++j) {
             fs::path p = fs::path(subs[j].path).lexically_normal();
             if (p.filename().empty()) p = p.parent_path();  // "class/lena/"
             files += (files.empty() ? "" : ", ") + p.filename().string();
+            paths += (paths.empty() ? "" : ", ") + subs[j].path;
         }
-        if (j - i > 1)
-            for (size_t k = i; k < j; ++k)
-                handedInTwice[subs[k].path] = fmt::format("handed in more than once ({}); each is a row of its own", files);
+        if (j - i < 2) continue;
+        for (size_t k = i; k < j; ++k)
+            handedInTwice[subs[k].path] = fmt::format("handed in more than once ({}); each is a row of its own", files);
+        std::cerr << fmt::format("glimmer: warning: {} handed in more than once ({}); each is graded, as a row of its "
+                                 "own\n", sanitizeForTerminal(subs[i].name, false), sanitizeForTerminal(paths, false));
     }
-    for (size_t i = 1; i < subs.size(); ++i)
-        if (subs[i].name == subs[i - 1].name && (i < 2 || subs[i - 2].name != subs[i].name)) {
-            std::string paths;
-            for (size_t k = i - 1; k < subs.size() && subs[k].name == subs[i].name; ++k)
-                paths += (paths.empty() ? "" : ", ") + subs[k].path;
-            std::cerr << fmt::format("glimmer: warning: {} handed in more than once ({}); each is graded, as a row "
-                                     "of its own\n", sanitizeForTerminal(subs[i].name, false),
-                                     sanitizeForTerminal(paths, false));
-        }
     if (subs.empty()) {
         std::cerr << "glimmer: error: batch: no submissions to grade\n";
         return kExitUsage;
@@ -381,9 +375,8 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                      r.verdict = "error";
                      r.notes = failureNote(result.diagnostics);
                      if (r.notes == "timed out" || r.notes == "the renderer crashed") {
-                         // The pictures are written in order: the first missing one is where it stopped.
-                         size_t k = 0;
-                         while (k < settings.size() && fs::exists(jobs[j].outputs[k], ec)) ++k;
+                         // The first setting without its picture is where it stopped.
+                         const size_t k = settingsDrawn(jobs[j]);
                          r.notes += k < settings.size() ? fmt::format(" at setting {} ({} of {})", settingLabel(settings[k]),
                                                                       k + 1, settings.size())
                                                         : " after its last setting";

@@ -334,6 +334,13 @@ void retire(Worker& w, bool kill) {
 
 }  // namespace
 
+size_t settingsDrawn(const BatchJob& job) {
+    size_t drawn = 0;
+    std::error_code ec;
+    while (drawn < job.outputs.size() && std::filesystem::exists(job.outputs[drawn], ec)) ++drawn;
+    return drawn;
+}
+
 bool inShard(size_t index, int shard, int shards) {
     return shards >= 1 && shard >= 1 && shard <= shards && int(index % size_t(shards)) == shard - 1;
 }
@@ -470,11 +477,7 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
             double limit = s.timeoutSeconds;
             if (w.job >= 0 && !s.settingDeadlines.empty() &&
                 s.settingDeadlines.size() == jobs[size_t(w.job)].outputs.size()) {
-                const auto& outputs = jobs[size_t(w.job)].outputs;
-                size_t drawn = 0;
-                std::error_code ec;
-                while (drawn + 1 < outputs.size() && std::filesystem::exists(outputs[drawn], ec)) ++drawn;
-                limit = s.settingDeadlines[drawn];
+                limit = s.settingDeadlines[std::min(settingsDrawn(jobs[size_t(w.job)]), s.settingDeadlines.size() - 1)];
             }
             if (const double ms = ranMs(w); w.job >= 0 && limit > 0 && ms > limit * 1000) {
                 long job = w.job;

@@ -77,6 +77,11 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
                                   const std::function<void(size_t, size_t)>& progress,
                                   const std::function<void(size_t, const BatchResult&)>& onResult = {});
 
+// How many of a grading job's settings are drawn: its outputs are written
+// in order, so the count of those on disk from the first (a stopped job's
+// tells where it stopped; the per-setting limits which one it is drawing).
+size_t settingsDrawn(const BatchJob& job);
+
 // Whether position `index` of the list belongs to shard `shard` (1-based) of `shards`.
 bool inShard(size_t index, int shard, int shards);
 
