@@ -152,18 +152,14 @@ def find_glimmer(given):
          "(build it: cmake --build build)")
 
 
-def checked_scripts(folder, glimmer, leave_out_failing):
-    """Each .glib script of `folder` checked as the page runs it; returns
-    (scripts that run, the files they read), paths real. A script that would
-    fail is listed with its messages; the pack is refused unless
-    `leave_out_failing`. A script may read files beside the folder (its
-    parent's shaders/, textures/), never above its parent."""
+def checked_scripts(folder, scripts, glimmer, leave_out_failing):
+    """Each of `scripts` (paths in `folder`, the .glib files collect took)
+    checked as the page runs it; returns (scripts that run, the files they
+    read), paths real. A script that would fail is listed with its
+    messages; the pack is refused unless `leave_out_failing`. A script may
+    read files beside the folder (its parent's shaders/, textures/), never
+    above its parent."""
     allowed = os.path.dirname(folder)
-    scripts = []
-    for dirpath, dirnames, filenames in os.walk(folder):
-        dirnames[:] = sorted(d for d in dirnames if not d.startswith(".") and not os.path.islink(os.path.join(dirpath, d)))
-        scripts += [os.path.join(dirpath, n) for n in sorted(filenames)
-                    if n.endswith(".glib") and not n.startswith(".") and not os.path.islink(os.path.join(dirpath, n))]
     good, inputs, failed = [], set(), []
     for script in scripts:
         try:
@@ -219,15 +215,19 @@ def pack(folder, web, html_out=None, static_dir=None, glimmer=None, leave_out_fa
     if not os.path.isdir(folder):
         fail(f"{folder}: not a folder")
     folder = os.path.realpath(folder)
-    scripts, reads = checked_scripts(folder, find_glimmer(glimmer), leave_out_failing)
-    # The folder's own files, and what its scripts read from beside it, under
-    # the folder they share (the layout the scripts name them in).
+    # The folder's own files (one walk, with its rules on links and names),
+    # its scripts among them checked.
+    own = collect(folder, [folder])
+    candidates = [os.path.join(folder, p) for p in sorted(own) if p.endswith(".glib")]
+    scripts, reads = checked_scripts(folder, candidates, find_glimmer(glimmer), leave_out_failing)
+    # Those files but the scripts that would fail, and what the scripts read
+    # from beside the folder, under the folder they share (the layout the
+    # scripts name them in).
     beside = sorted(p for p in reads if not inside(p, folder))
     root = os.path.commonpath([folder] + beside)
-    files = collect(root, [folder])
-    left_out = {p for p in files if p.endswith(".glib")} - {os.path.relpath(s, root) for s in scripts}
-    for path in left_out:
-        files.pop(path, None)
+    good = set(scripts)
+    files = {os.path.relpath(os.path.join(folder, p), root): data for p, data in own.items()
+             if not p.endswith(".glib") or os.path.join(folder, p) in good}
     total = sum(len(d) for d in files.values())
     for path in beside:
         data = read_checked(path, folder)
