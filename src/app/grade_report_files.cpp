@@ -16,8 +16,11 @@ namespace glimmer {
 namespace fs = std::filesystem;
 namespace {
 
-std::string dataUrl(const Image& picture) {
-    return picture.empty() ? "" : "data:image/png;base64," + base64(encodePng(thumbnail(picture, 96), 6));
+// A picture as a PNG data URL ("" for none), at most `maxSide` on its
+// longer side (the report's thumbnails; 0: full size, the feedback pages).
+std::string dataUrl(const Image& picture, int maxSide = 0) {
+    if (picture.empty()) return "";
+    return "data:image/png;base64," + base64(encodePng(maxSide > 0 ? thumbnail(picture, maxSide) : picture, 6));
 }
 
 // "pictures/alice-3.png" -> "pictures/alice-": the setting's number is
@@ -29,9 +32,6 @@ std::string settingPrefix(const std::string& picture) {
     return start < end && start > 0 && picture[start - 1] == '-' ? picture.substr(0, start) : "";
 }
 
-std::string fullDataUrl(const Image& picture) {
-    return picture.empty() ? "" : "data:image/png;base64," + base64(encodePng(picture, 6));
-}
 
 // The student's feedback page: every setting's pictures, full size.
 void writeFeedback(const fs::path& dir, const ReportHeader& header, const GradeRow& row, const fs::path& picturesDir) {
@@ -44,9 +44,9 @@ void writeFeedback(const fs::path& dir, const ReportHeader& header, const GradeR
         std::string why;
         const bool a = loadImage((picturesDir / (mine + std::to_string(k) + ".png")).string(), student, why);
         const bool b = loadImage((picturesDir / (theirs + std::to_string(k) + ".png")).string(), solution, why);
-        if (a) s.student = fullDataUrl(student);
-        if (b) s.solution = fullDataUrl(solution);
-        if (a && b) s.difference = fullDataUrl(differencePicture(student, solution));
+        if (a) s.student = dataUrl(student);
+        if (b) s.solution = dataUrl(solution);
+        if (a && b) s.difference = dataUrl(differencePicture(student, solution));
         settings.push_back(s);
     }
     std::error_code ec;
@@ -65,9 +65,9 @@ RowPictures rowPictures(const GradeRow& row, const fs::path& dir) {
     std::string why;
     const bool haveStudent = !row.picture.empty() && loadImage((dir / row.picture).string(), student, why);
     const bool haveSolution = !row.solution.empty() && loadImage((dir / row.solution).string(), solution, why);
-    if (haveStudent) p.student = dataUrl(student);
-    if (haveSolution) p.solution = dataUrl(solution);
-    if (haveStudent && haveSolution) p.difference = dataUrl(differencePicture(student, solution));
+    if (haveStudent) p.student = dataUrl(student, 96);
+    if (haveSolution) p.solution = dataUrl(solution, 96);
+    if (haveStudent && haveSolution) p.difference = dataUrl(differencePicture(student, solution), 96);
     return p;
 }
 
