@@ -239,7 +239,7 @@ void setUpFonts(float scale) {
     io.Fonts->Clear();
     static const ImGuiStyle unscaled = ImGui::GetStyle();
     ImGui::GetStyle() = unscaled;
-    float px = std::round(15.f * scale);
+    float px = std::round(kPanelFontPx * scale);
     ImFontConfig cfg;
     cfg.OversampleH = 2;  // rasterised at the size it is shown: crisp, not a blown-up bitmap
     if (!sans.empty() && io.Fonts->AddFontFromFileTTF(sans.c_str(), px, &cfg)) {

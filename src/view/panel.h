@@ -27,6 +27,9 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
 // it measured, for the front end's layout (view/view_model.h layoutWindow).
 std::vector<ViewCommand> drawPanelWindow(ViewerState& s, float x, float height, int& width, int& contentHeight);
 
+// The panel's text size at scale 1, in pixels (the "Show values" box's too).
+constexpr float kPanelFontPx = 15;
+
 // The ImGui fonts, at `scale`: DejaVu Sans (the panel) and DejaVu Sans Mono
 // (error messages, whose carets must line up). Falls back to ImGui's own
 // font scaled, with a warning on stderr, when no TTF file is found.

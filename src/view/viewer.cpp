@@ -375,7 +375,7 @@ private:
             ImGui_ImplOpenGL3_CreateFontsTexture();
         }
         uiScale_ = scale;
-        core_.setValuesTextPx(15.f * scale);  // legible from the back of a room at --ui-scale 2
+        core_.setUiScale(scale);
         std::cerr << fmt::format("glimmer view: ui scale {:g}\n", scale);
     }
 

@@ -146,10 +146,11 @@ Image ViewerCore::savedPicture(bool hardcopy) {
 }
 
 const Image& ViewerCore::valuesLayer() {
+    const float px = kPanelFontPx * uiScale_;
     std::string text = overlayText(s_);
-    std::string key = fmt::format("{}|{}", valuesPx_, text);
+    std::string key = fmt::format("{}|{}", px, text);
     if (key != valuesMadeFor_) {
-        valuesLayer_ = text.empty() ? Image{} : labelLayer(text, valuesPx_);
+        valuesLayer_ = text.empty() ? Image{} : labelLayer(text, px);
         valuesMadeFor_ = key;
     }
     return valuesLayer_;

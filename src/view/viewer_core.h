@@ -101,10 +101,11 @@ public:
     Image savedPicture(bool hardcopy);
 
     // "Show values": the box as a layer (image/ttf_text.h labelLayer) in
-    // DejaVu at `px` pixels (the panel's scale), remade only when its text
+    // DejaVu at the panel's text size times `scale` (the shell's ui scale:
+    // legible from the back of a room at 2), remade only when its text
     // changes; empty when off or nothing to show. drawValues() puts it over
     // the picture (at kOverlayAt of the window) with Dear ImGui.
-    void setValuesTextPx(float px) { valuesPx_ = px; }
+    void setUiScale(float scale) { uiScale_ = scale; }
     const Image& valuesLayer();
     void drawValues();
 
@@ -166,7 +167,7 @@ private:
     Image valuesLayer_;
     std::string valuesMadeFor_, valuesUploaded_;
     unsigned valuesId_ = 0;
-    float valuesPx_ = 15.f;
+    float uiScale_ = 1.f;
 };
 
 }  // namespace glimmer

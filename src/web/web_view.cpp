@@ -118,7 +118,7 @@ void applyScale(float scale) {
     setUpFonts(scale);
     ImGui_ImplOpenGL3_DestroyFontsTexture();
     ImGui_ImplOpenGL3_CreateFontsTexture();
-    if (viewer) viewer->core.setValuesTextPx(15.f * scale);
+    if (viewer) viewer->core.setUiScale(scale);
 }
 
 // For the page's editor: each diagnostic as one line of tab-separated
