@@ -260,6 +260,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_open(const char* path, int width, int heig
         viewer.reset();
         viewer = std::make_unique<WebViewer>(asked);
         viewer->imguiReady = hadImGui;
+        viewer->core.setUiScale(gScale);  // the page's scale outlives a viewer (another script opened)
         viewer->width = width > 0 ? width : 512;
         viewer->height = height > 0 ? height : 512;
     }
