@@ -2,6 +2,7 @@
 // each, returning the process's exit code (pipeline/options.h).
 #pragma once
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,6 +23,11 @@ void addCheckCommand(CLI::App& app, CheckOptions& options);
 struct ViewOptions;
 void addViewCommand(CLI::App& app, ViewOptions& options);
 int runRender(const RenderOptions& options);
+// render --watch (app/watch_render.cpp): its options checked before the
+// script is opened, then run on the opened session.
+std::optional<int> checkWatchOptions(const RenderOptions& options);
+struct Session;
+int runRenderWatch(const RenderOptions& options, Session& session);
 void addBatchCommand(CLI::App& app, BatchOptions& options);
 int runBatch(const BatchOptions& options);
 void addBatchMergeCommand(CLI::App& app, BatchMergeOptions& options);

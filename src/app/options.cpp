@@ -38,6 +38,13 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     sub->add_flag("--health", o.health, "report NaN, Inf, negative, above-65504 and clipped values per target");
     sub->add_flag("--strict", o.strict, "like --health, and exit 1 if any target holds NaN, Inf, negatives or "
                                         "values above 65504");
+    sub->add_option("--watch", o.watch, "FILE:LINE:EXPR: write the value of a GLSL expression right after that line "
+                                        "runs, over the whole pass, instead of the picture: -o .png shows it, .exr "
+                                        "or .pfm holds the floats; prints its range and NaN/Inf counts")
+        ->type_name("FILE:LINE:EXPR");
+    sub->add_option("--watch-range", o.watchRange, "LO,HI: the values shown black to white (default: their own "
+                                                   "minimum and maximum); outside it, marked")
+        ->type_name("LO,HI");
 }
 
 void addCheckCommand(CLI::App& app, CheckOptions& o) {
@@ -47,6 +54,9 @@ void addCheckCommand(CLI::App& app, CheckOptions& o) {
                                   "will the script run in the browser?");
     sub->add_flag("--list-inputs", o.listInputs, "after a check without errors, print every file the script reads, "
                                                  "one a line (tools/web_lesson.py packs these)");
+    sub->add_option("--watch", o.watch, "FILE:LINE:EXPR: also check that the expression can be watched there "
+                                        "(in scope, a line inside a function, a type a watch shows)")
+        ->type_name("FILE:LINE:EXPR");
 }
 
 void addViewCommand(CLI::App& app, ViewOptions& o) {

@@ -6,6 +6,7 @@
 
 #include <fmt/format.h>
 
+#include "app/commands.h"
 #include "pipeline/console.h"
 #include "pipeline/numeric_health.h"
 #include "process/output_guard.h"
@@ -82,6 +83,7 @@ int runRender(const RenderOptions& o) {
     }
     Output out;
     if (auto code = chooseOutput(o, out)) return *code;
+    if (auto code = checkWatchOptions(o)) return *code;
     Session s;
     if (auto code = openSession(o, keep, false, s)) return *code;
     // A unit with nothing on it is a typo: say so before drawing or writing anything.
@@ -102,6 +104,8 @@ int runRender(const RenderOptions& o) {
             return kExitUsage;
         }
     }
+
+    if (!o.watch.empty()) return runRenderWatch(o, s);
 
     auto t0 = Clock::now();
     Clock::duration writing{};  // the PNGs' share of the loop, reported as "write" with the dumps

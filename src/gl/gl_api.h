@@ -23,7 +23,7 @@ namespace glimmer {
 // desktop OpenGL: the renderer's whole path on an ES context.
 #define GLIMMER_GL_FUNCTIONS(X)                                                                          \
     X(GetError) X(GetString) X(GetIntegerv) X(Enable) X(Disable) X(Viewport) X(Clear) X(ClearColor)     \
-    X(DepthFunc) X(DepthMask) X(Finish) X(Flush) X(ReadPixels) X(PixelStorei) X(LineWidth)             \
+    X(DepthFunc) X(DepthMask) X(ColorMask) X(Finish) X(Flush) X(ReadPixels) X(PixelStorei) X(LineWidth)             \
     X(GenTextures) X(DeleteTextures) X(BindTexture) X(TexImage2D) X(TexImage3D) X(TexParameteri)       \
     X(ActiveTexture) X(GenerateMipmap)                                                                   \
     X(DrawElements) X(DrawArrays)                                                                        \
@@ -51,7 +51,7 @@ namespace glimmer {
     X(GetTexImage) X(ClientActiveTexture)                                                                \
     X(EnableClientState) X(DisableClientState) X(VertexPointer) X(NormalPointer) X(TexCoordPointer)     \
     X(Begin) X(End) X(TexCoord2f) X(Vertex2f) X(DrawBuffer)                                              \
-    X(GetQueryObjectui64v) X(PatchParameteri)
+    X(GetQueryObjectui64v) X(PatchParameteri) X(BindFragDataLocation)
 
 struct GlApi {
 #define GLIMMER_GL_MEMBER(name) decltype(&::gl##name) name = nullptr;

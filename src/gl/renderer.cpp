@@ -94,6 +94,7 @@ std::string Renderer::rendererName() const {
 }
 
 void Renderer::releaseAll() {
+    dropWatch();
     for (auto& t : textures_)
         if (t.id) gl_->DeleteTextures(1, &t.id);
     textures_.clear();

@@ -6,6 +6,7 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,16 @@ struct SlicedFrame {
     std::vector<bool> unfinished() const;
 };
 
+// What a watch drew (pipeline/watch.h): one expression's value at every
+// pixel of one pass, read back as floats, never through an 8-bit colour.
+struct WatchCapture {
+    Image value;  // RGBA float, row 0 at the top: the expression widened to a vec4
+    // RGBA float: x 1 where a fragment ran, y the value's component count
+    // there (0: the watched line did not run there), z its kind (WatchKind
+    // in shader/watch_rewrite.h).
+    Image info;
+};
+
 class Renderer {
 public:
     // Loads the GL table through `getProc`; null and `error` when the driver
@@ -57,6 +68,21 @@ public:
     ~Renderer();
     Renderer(const Renderer&) = delete;
     Renderer& operator=(const Renderer&) = delete;
+
+    // A watch: `program` built again with the stages in `replaced` (stage
+    // index -> text; shader/watch_rewrite.h) in place of those prepare()
+    // compiled. False, with the compiler's messages, when it does not build;
+    // no watch is then kept. Dropped by the next prepare().
+    bool prepareWatch(int program, const std::map<size_t, std::string>& replaced, Diagnostics& diags);
+    void dropWatch();
+    // Draws the passes flagged in `feeding` as render() does, then `pass`
+    // into two float targets of its size: the watched program's draws with
+    // the watch's program, every other draw with colour writes off (it still
+    // hides what lies behind it). An empty capture without a watch.
+    WatchCapture renderWatch(int pass, const UniformValues& values, double time, const std::vector<bool>& feeding);
+    // Each stage's text of `program` as prepare() compiled it (empty when it
+    // was not built): what a watch rewrites.
+    std::vector<std::optional<std::string>> programTexts(int program) const;
 
     // Waits until every GL command so far has finished (for wall-clock timing).
     void finish() const;
@@ -156,6 +182,10 @@ private:
     void uploadTextures(const Plan& plan, const Assets& assets);
     void uploadMeshes(const Plan& plan, const Assets& assets);
     void buildPrograms(const Plan& plan, const Assets& assets, Diagnostics& diags);
+    // One Program from its stages' texts, and what it declares; null (with
+    // the compiler's messages) when it does not build.
+    std::unique_ptr<Program> makeProgram(const Plan& plan, const ProgramDecl& decl,
+                                         const std::vector<std::optional<std::string>>& texts, Diagnostics& diags);
     // Samplers that read a unit holding another kind of texture (they read
     // black): warned on the Program line.
     void warnSamplerKinds(const Plan& plan, bool everything, Diagnostics& diags);
@@ -200,6 +230,8 @@ private:
     std::vector<std::unique_ptr<MeshBuffers>> meshes_;
     std::vector<std::unique_ptr<Program>> programs_;
     std::vector<std::unique_ptr<Target>> targets_;
+    std::unique_ptr<Program> watch_;  // the watched program, rewritten (prepareWatch)
+    int watchedProgram_ = -1;         // which of programs_ it stands in for
     std::unique_ptr<Target> screen_;
     glm::mat4 scene_{1.f};
     std::function<void(int)> passListener_;

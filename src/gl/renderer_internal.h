@@ -48,6 +48,7 @@ struct Renderer::Program {
     bool paintsAllItCovers = false;
     std::string name;
     std::set<std::string> initialized;  // uniforms its shaders give a value of their own (`uniform float a = 1.;`)
+    std::vector<std::optional<std::string>> texts;  // each stage's text as compiled: a watch rewrites one of them
 };
 
 struct Renderer::MeshBuffers {

@@ -24,7 +24,7 @@ bool Renderer::prepare(const Plan& plan, const Assets& assets, Diagnostics& diag
     uploadTextures(plan, assets);
     if (!gl_->es) gl_->Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // ES 3.0: always seamless, and no such enum
     uploadMeshes(plan, assets);
-    buildPrograms(plan, assets, diags);
+    buildPrograms(*plan_, assets, diags);  // its settings point into the kept copy, which outlives the caller's
     warnSamplerKinds(plan, everything, diags);
     warnUndrawable(plan, everything, diags);
     makeTargets(plan, everything, diags);
@@ -138,61 +138,65 @@ void Renderer::uploadMeshes(const Plan& plan, const Assets& assets) {
 
 // Compiles and links each used Program and learns what it declares.
 void Renderer::buildPrograms(const Plan& plan, const Assets& assets, Diagnostics& diags) {
-    const std::string& file = plan.scriptFile;
     const std::vector<bool>& progUsed = assets.used.programs;
-    for (size_t i = 0; i < plan.programs.size(); ++i) {
-        if (!progUsed[i]) continue;
-        const ProgramDecl& decl = plan.programs[i];
-        unsigned id = buildProgram(*gl_, decl, assets.shaderTexts[i], file, diags);
-        if (!id) continue;
-        auto p = std::make_unique<Program>();
-        p->id = id;
-        p->uniforms = activeUniforms(*gl_, id);
-        p->timerLocation = gl_->GetUniformLocation(id, "Timer");
-        p->feed = findBuiltinFeed(*gl_, id);
-        p->usesTangent = gl_->GetAttribLocation(id, "Tangent") == kTangentLocation;
-        p->name = decl.name;
-        p->paintsAllItCovers = true;
-        for (size_t k = 0; k < decl.stages.size(); ++k) {
-            const ShaderStage& st = decl.stages[k];
-            const std::string text = k < assets.shaderTexts[i].size() && assets.shaderTexts[i][k] ? *assets.shaderTexts[i][k] : "";
-            if (st.kind == ShaderStage::Kind::TessEvaluation) p->tessellated = true;
-            if (st.kind == ShaderStage::Kind::Geometry) gl_->GetProgramiv(id, GL_GEOMETRY_INPUT_TYPE, &p->geometryInput);
-            bool vouched = st.kind == ShaderStage::Kind::Vertex     ? keepsPlainTransform(text)
-                           : st.kind == ShaderStage::Kind::Fragment ? !mayDiscard(text)
-                                                                    : false;
-            p->paintsAllItCovers = p->paintsAllItCovers && vouched;
-            UniformInitializers own = takeUniformInitializers(text);
-            for (const auto* list : {&own.values, &own.unreadable})
-                for (const auto& u : *list) p->initialized.insert(u.name);
-        }
-        checkUniformSettings(decl, p->uniforms, file, diags);
-        warnUnsetUniforms(decl, p->uniforms, p->initialized, assets.shaderTexts[i], file, diags);
-        for (const auto& u : p->uniforms) {
-            const UniformSetting* setting = nullptr;
-            for (const auto& st : decl.uniforms)
-                if (st.name == u.name) setting = &st;
-            p->settings.push_back(setting);
-            // glman's built-in noise: Noise2 on unit 2, Noise3 on unit 3,
-            // made only for programs that declare them.
-            bool is2 = u.name == "Noise2", is3 = u.name == "Noise3";
-            if (!is2 && !is3) continue;
-            GLenum want = is2 ? GL_SAMPLER_2D : GL_SAMPLER_3D;
-            if (u.type != want) {
-                diags.warning(file, decl.loc, fmt::format("Program {} declares {} as another type; the built-in noise "
-                                                          "is a {}", decl.name, u.name, is2 ? "sampler2D" : "sampler3D"));
-                continue;
-            }
-            (is2 ? p->noise2 : p->noise3) = true;
-            noiseTexture(is3, is2 ? plan.noise2DRes : plan.noise3DRes);
-            if (!setting) {
-                gl_->UseProgram(id);
-                gl_->Uniform1i(u.location, is2 ? 2 : 3);
-                gl_->UseProgram(0);
-            }
-        }
-        programs_[i] = std::move(p);
+    for (size_t i = 0; i < plan.programs.size(); ++i)
+        if (progUsed[i]) programs_[i] = makeProgram(plan, plan.programs[i], assets.shaderTexts[i], diags);
+}
+
+std::unique_ptr<Renderer::Program> Renderer::makeProgram(const Plan& plan, const ProgramDecl& decl,
+                                                         const std::vector<std::optional<std::string>>& texts,
+                                                         Diagnostics& diags) {
+    const std::string& file = plan.scriptFile;
+    unsigned id = buildProgram(*gl_, decl, texts, file, diags);
+    if (!id) return nullptr;
+    auto p = std::make_unique<Program>();
+    p->texts = texts;
+    p->id = id;
+    p->uniforms = activeUniforms(*gl_, id);
+    p->timerLocation = gl_->GetUniformLocation(id, "Timer");
+    p->feed = findBuiltinFeed(*gl_, id);
+    p->usesTangent = gl_->GetAttribLocation(id, "Tangent") == kTangentLocation;
+    p->name = decl.name;
+    p->paintsAllItCovers = true;
+    for (size_t k = 0; k < decl.stages.size(); ++k) {
+        const ShaderStage& st = decl.stages[k];
+        const std::string text = k < texts.size() && texts[k] ? *texts[k] : "";
+        if (st.kind == ShaderStage::Kind::TessEvaluation) p->tessellated = true;
+        if (st.kind == ShaderStage::Kind::Geometry) gl_->GetProgramiv(id, GL_GEOMETRY_INPUT_TYPE, &p->geometryInput);
+        bool vouched = st.kind == ShaderStage::Kind::Vertex     ? keepsPlainTransform(text)
+                       : st.kind == ShaderStage::Kind::Fragment ? !mayDiscard(text)
+                                                                : false;
+        p->paintsAllItCovers = p->paintsAllItCovers && vouched;
+        UniformInitializers own = takeUniformInitializers(text);
+        for (const auto* list : {&own.values, &own.unreadable})
+            for (const auto& u : *list) p->initialized.insert(u.name);
     }
+    checkUniformSettings(decl, p->uniforms, file, diags);
+    warnUnsetUniforms(decl, p->uniforms, p->initialized, texts, file, diags);
+    for (const auto& u : p->uniforms) {
+        const UniformSetting* setting = nullptr;
+        for (const auto& st : decl.uniforms)
+            if (st.name == u.name) setting = &st;
+        p->settings.push_back(setting);
+        // glman's built-in noise: Noise2 on unit 2, Noise3 on unit 3,
+        // made only for programs that declare them.
+        bool is2 = u.name == "Noise2", is3 = u.name == "Noise3";
+        if (!is2 && !is3) continue;
+        GLenum want = is2 ? GL_SAMPLER_2D : GL_SAMPLER_3D;
+        if (u.type != want) {
+            diags.warning(file, decl.loc, fmt::format("Program {} declares {} as another type; the built-in noise "
+                                                      "is a {}", decl.name, u.name, is2 ? "sampler2D" : "sampler3D"));
+            continue;
+        }
+        (is2 ? p->noise2 : p->noise3) = true;
+        noiseTexture(is3, is2 ? plan.noise2DRes : plan.noise3DRes);
+        if (!setting) {
+            gl_->UseProgram(id);
+            gl_->Uniform1i(u.location, is2 ? 2 : 3);
+            gl_->UseProgram(0);
+        }
+    }
+    return p;
 }
 
 namespace {

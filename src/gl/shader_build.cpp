@@ -1,4 +1,5 @@
 #include "gl/shader_build.h"
+#include "shader/watch_rewrite.h"
 #include "gl/builtin_feed.h"
 #include "shader/glsl_scan.h"
 #include "shader/uninitialized_globals.h"
@@ -224,6 +225,13 @@ unsigned linkShaders(const GlApi& gl, const std::vector<unsigned>& shaders, std:
     for (unsigned sh : shaders) gl.AttachShader(program, sh);
     gl.BindAttribLocation(program, kTangentLocation, "Tangent");
     bindBuiltinAttributes(gl, program);  // glimmer_Vertex and the others, where declared
+    // A watch's two outputs (shader/watch_rewrite.h) in GLSL 1.30 to 1.50,
+    // which cannot say their locations: bound here (a name the program lacks
+    // is ignored; ES takes the locations the text gives).
+    if (gl.BindFragDataLocation) {
+        gl.BindFragDataLocation(program, 0, std::string(kWatchValueOut).c_str());
+        gl.BindFragDataLocation(program, 1, std::string(kWatchInfoOut).c_str());
+    }
     gl.LinkProgram(program);
     GLint status = 0;
     gl.GetProgramiv(program, GL_LINK_STATUS, &status);

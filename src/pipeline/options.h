@@ -27,6 +27,7 @@ struct CommonOptions {
 // glimmer check: --web translates every shader for WebGL 2 instead of compiling on a context.
 struct CheckOptions : CommonOptions {
     bool web = false;
+    std::string watch;        // --watch FILE:LINE:EXPR: can this be watched? (pipeline/watch.h)
     bool listInputs = false;  // --list-inputs: after a clean check, every file the script reads on stdout
 };
 
@@ -40,6 +41,8 @@ struct RenderOptions : CommonOptions {
     int pngLevel = 3;     // --png-level: zlib's level for the PNGs, 0 to 9 (image.h's kDefaultPngLevel)
     bool health = false;  // print the numeric health of every target
     bool strict = false;  // and exit 1 if any holds NaN, Inf, negatives or values above 65504
+    std::string watch;       // --watch FILE:LINE:EXPR: that value over its pass instead of the picture
+    std::string watchRange;  // --watch-range LO,HI (default: the values' own)
 };
 
 struct SheetOptions : CommonOptions {

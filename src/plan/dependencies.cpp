@@ -37,4 +37,21 @@ std::vector<bool> passesToRun(const Plan& plan, const Change& change) {
     return run;
 }
 
+std::vector<bool> passesFeeding(const Plan& plan, int pass) {
+    std::vector<bool> feeds(plan.passes.size(), false);
+    if (pass < 0 || size_t(pass) >= plan.passes.size()) return feeds;
+    // A backward walk: a pass feeds the watched one when it writes a texture
+    // that is read later on the way there; what it reads is then needed too.
+    std::set<int> wanted = plan.passes[size_t(pass)].reads;
+    for (size_t i = size_t(pass); i-- > 0;) {
+        const Pass& p = plan.passes[i];
+        bool writesWanted = false;
+        for (int t : p.targets) writesWanted |= wanted.count(t) > 0;
+        if (!writesWanted) continue;
+        feeds[i] = true;
+        wanted.insert(p.reads.begin(), p.reads.end());
+    }
+    return feeds;
+}
+
 }  // namespace glimmer

@@ -21,6 +21,12 @@ struct Change {
 // downstream through the textures it writes.
 std::vector<bool> passesToRun(const Plan& plan, const Change& change);
 
+// One flag per pass: the passes before `pass` whose drawing it reads,
+// directly or through another such pass (what a watch of `pass` must draw
+// first: pipeline/watch.h). A pass that only draws under `pass` on the same
+// target is not among them: the watch draws `pass` alone.
+std::vector<bool> passesFeeding(const Plan& plan, int pass);
+
 // The programs each pass draws with.
 std::set<int> programsOfPass(const Pass& pass);
 

@@ -1,0 +1,81 @@
+// glimmer render --watch: the value of one expression over its pass
+// (pipeline/watch.h), written as a picture (.png) or as the floats
+// themselves (.exr, .pfm, .hdr), with its range and counts on stdout.
+#include <iostream>
+
+#include <fmt/format.h>
+
+#include "app/commands.h"
+#include "pipeline/console.h"
+#include "pipeline/watch.h"
+#include "process/session.h"
+
+namespace glimmer {
+
+namespace {
+
+bool endsWith(const std::string& s, const char* tail) {
+    std::string t(tail), lower = s;
+    for (auto& c : lower) c = char(std::tolower(static_cast<unsigned char>(c)));
+    return lower.size() >= t.size() && lower.compare(lower.size() - t.size(), t.size(), t) == 0;
+}
+
+}  // namespace
+
+std::optional<int> checkWatchOptions(const RenderOptions& o) {
+    if (o.watch.empty()) {
+        if (!o.watchRange.empty()) {
+            std::cerr << "glimmer: error: --watch-range needs --watch\n";
+            return kExitUsage;
+        }
+        return std::nullopt;
+    }
+    if (o.frames != 1 || o.output == "-" || !o.dumps.empty()) {
+        std::cerr << "glimmer: error: --watch writes one file: give -o a .png, .exr or .pfm, and no --frames or --dump\n";
+        return kExitUsage;
+    }
+    if (!endsWith(o.output, ".png") && !endsWith(o.output, ".exr") && !endsWith(o.output, ".pfm") &&
+        !endsWith(o.output, ".hdr")) {
+        std::cerr << fmt::format("glimmer: error: --watch -o {}: write a .png (the picture) or .exr, .pfm, .hdr "
+                                 "(the float values)\n", o.output);
+        return kExitUsage;
+    }
+    return std::nullopt;
+}
+
+int runRenderWatch(const RenderOptions& o, Session& s) {
+    WatchSpec spec;
+    std::string why;
+    if (!parseWatchSpec(o.watch, spec, why)) {
+        std::cerr << "glimmer: error: --watch: " << why << "\n";
+        return kExitUsage;
+    }
+    WatchRange range;
+    if (!o.watchRange.empty() && !parseWatchRange(o.watchRange, range, why)) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitUsage;
+    }
+    Diagnostics diags;
+    Watch watch;
+    if (!startWatch(spec, s.loaded.plan, *s.renderer, diags, watch)) {
+        printDiagnostics(diags, s.loaded.sources, std::cerr);
+        return kExitScriptError;
+    }
+    if (!o.watchRange.empty()) watch.range = range;
+    WatchFrame frame = drawWatch(*s.renderer, watch, *s.values, o.time);
+    if (frame.picture.empty()) {
+        std::cerr << "glimmer: error: --watch: the driver cannot draw into a float target (RGBA32F)\n";
+        return kExitScriptError;
+    }
+    const bool floats = !endsWith(o.output, ".png");
+    if (!writeImage(o.output, floats ? frame.capture.value : frame.picture, why)) {
+        std::cerr << "glimmer: error: " << why << "\n";
+        return kExitScriptError;
+    }
+    std::cout << "watch " << watchTitle(watch, s.loaded.plan) << ": " << watchSummary(frame.stats) << "\n";
+    reportWrote(fmt::format("{} ({}x{}, {})", o.output, frame.picture.width, frame.picture.height,
+                            floats ? "the float values" : "the watch's picture"));
+    return kExitOk;
+}
+
+}  // namespace glimmer
