@@ -66,7 +66,8 @@ void addViewCommand(CLI::App& app, ViewOptions& o) {
     sub->add_option("--set", o.sets, "NAME=VALUE for a range, checkbox, colour (R,G,B[,A]) or vector (X,Y,...) (repeatable)");
     sub->add_option("--size", o.size, "window size WxH (default: WindowSize, else 600x600)");
     sub->add_option("--exec", o.exec, "commands to run, separated by ';': set NAME VALUE, reload, save FILE.png, "
-                                      "show UNIT|screen, values on|off, probe [on|off|X Y], split L R|off, help, quit");
+                                      "show UNIT|screen, values on|off, probe [on|off|X Y], split L R|off, watch FILE:LINE "
+                                      "EXPR|off|range LO,HI, help, quit");
     sub->add_flag("!--no-stdin", o.readStdin, "do not read commands from standard input");
     sub->add_flag("--stand-ins,!--no-stand-ins", o.standIns, "replace missing images and models by stand-ins, with a "
                                                             "warning (the default in view); --no-stand-ins: an error");

@@ -127,7 +127,12 @@ public:
     // pass is drawing (--timeout names it; process/watchdog.h).
     void setPassListener(std::function<void(int pass)> listener) { passListener_ = std::move(listener); }
 
-    // Copies the screen (texture < 0) or a texture target to the window's
+    // A picture made on the CPU (a watch's, RGBA8, row 0 at the top), shown
+    // by present and presentIn as texture kUploadedPicture.
+    static constexpr int kUploadedPicture = -2;
+    void uploadPicture(const Image& picture);
+
+    // Copies the screen (texture -1) or a texture target to the window's
     // framebuffer 0, scaled to fit inside w x h and centred.
     void present(int texture, int windowWidth, int windowHeight) const;
     // The same into the rectangle x, y (top left, window pixels, y down), w x h
@@ -233,6 +238,8 @@ private:
     std::unique_ptr<Program> watch_;  // the watched program, rewritten (prepareWatch)
     int watchedProgram_ = -1;         // which of programs_ it stands in for
     std::unique_ptr<Target> screen_;
+    std::unique_ptr<Target> uploaded_;  // uploadPicture's
+    unsigned uploadedTexture_ = 0;
     glm::mat4 scene_{1.f};
     std::function<void(int)> passListener_;
     std::vector<double> msPerRow_;  // per pass: the wall clock a row of it took in its last band (0: not yet)

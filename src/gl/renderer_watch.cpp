@@ -30,6 +30,25 @@ void Renderer::dropWatch() {
     watchedProgram_ = -1;
 }
 
+void Renderer::uploadPicture(const Image& picture) {
+    if (picture.type != Image::Type::U8 || picture.width < 1 || picture.height < 1) return;
+    if (!uploaded_) {
+        uploaded_ = std::make_unique<Target>();
+        gl_->GenTextures(1, &uploadedTexture_);
+        gl_->GenFramebuffers(1, &uploaded_->fbo);
+    }
+    gl_->BindTexture(GL_TEXTURE_2D, uploadedTexture_);
+    textureParameters(*gl_);
+    gl_->PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl_->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, picture.width, picture.height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    flipRows(picture.u8, picture.height).data());
+    gl_->BindTexture(GL_TEXTURE_2D, 0);
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, uploaded_->fbo);
+    gl_->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, uploadedTexture_, 0);
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
+    uploaded_->width = picture.width, uploaded_->height = picture.height;
+}
+
 std::vector<std::optional<std::string>> Renderer::programTexts(int program) const {
     if (program < 0 || size_t(program) >= programs_.size() || !programs_[size_t(program)]) return {};
     return programs_[size_t(program)]->texts;

@@ -9,6 +9,7 @@
 
 #include "plan/limits.h"
 #include "view/panel.h"
+#include "view/panel_watch.h"
 #include "view/view_model.h"
 
 namespace glimmer {
@@ -355,6 +356,7 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
             s.controlRects["Probe"] = {at.x, at.y, size.x, size.y};
         }
         if (!s.probeText.empty()) ImGui::TextUnformatted(s.probeText.c_str());
+        watchControls(s, asked);
 
         // Timings fold away, so the sliders stay near the top. A picture
         // drawn in slices shows its progress on the same line, so nothing

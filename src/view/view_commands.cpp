@@ -45,9 +45,24 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
     std::istringstream in(line);
     std::string word;
     if (!(in >> word) || word[0] == '#') return std::nullopt;
+    ViewCommand c;
+    if (word == "watch") {
+        // The rest of the line as written: an expression may hold spaces.
+        std::string rest;
+        std::getline(in, rest);
+        rest.erase(0, rest.find_first_not_of(" \t"));
+        while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r')) rest.pop_back();
+        c.kind = ViewCommand::Kind::Watch;
+        if (rest.rfind("range ", 0) == 0) c.name = "range", rest.erase(0, 6);
+        c.text = rest;
+        if (rest.empty()) {
+            error = "usage: watch FILE:LINE EXPRESSION, watch off, or watch range LO,HI|auto";
+            return std::nullopt;
+        }
+        return c;
+    }
     std::vector<std::string> args;
     for (std::string a; in >> a;) args.push_back(a);
-    ViewCommand c;
     auto want = [&](size_t n, const char* usage) {
         if (args.size() == n) return true;
         error = std::string("usage: ") + usage;
@@ -131,7 +146,7 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         if (!want(0, "quit")) return std::nullopt;
         c.kind = ViewCommand::Kind::Quit;
     } else {
-        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, scale, help, frames, quit)";
+        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, watch, scale, help, frames, quit)";
         return std::nullopt;
     }
     return c;

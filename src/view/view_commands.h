@@ -8,11 +8,12 @@
 namespace glimmer {
 
 struct ViewCommand {
-    enum class Kind { Set, Reload, Save, Show, Values, Probe, Split, Scale, Help, Frames, Quit };
+    enum class Kind { Set, Reload, Save, Show, Values, Probe, Split, Watch, Scale, Help, Frames, Quit };
     Kind kind = Kind::Quit;
     std::string name;   // Set: the uniform; Save: the file
     double value = 0;   // Set: the first number; Scale: the scale
-    std::string text;   // Set: the value as written: a number, true/false, or "r,g,b[,a]" / a vector
+    std::string text;   // Set: the value as written: a number, true/false, or "r,g,b[,a]" / a vector;
+                        // Watch: FILE:LINE EXPR, "off", or with name "range": LO,HI or "auto"
     int unit = -1;      // Show, Split's left side: texture unit, -1 for the screen
     int right = -1;     // Split's right side: texture unit, -1 for the screen
     bool on = true;     // Values, Probe, Split: on or off

@@ -68,6 +68,8 @@ bool ViewerCore::load(int w, int h, Diagnostics& diags, SourceTexts& sources, Pl
     adoptScript(s_, std::move(next), std::move(renderer), source_.sets, diags);
     drawing_.reset();  // its passes belong to the old plan
     firstFrame_ = true;
+    std::string said;
+    if (s_.watch) startWatchNow(said);  // the edited shader, watched again
     return true;
 }
 
@@ -79,6 +81,7 @@ bool ViewerCore::draw(double budgetMs) {
         firstFrame_ = false;
     }
     if (!s_.renderer || !s_.good) return false;
+    if (s_.watch) return drawWatchFrame();
     const Plan& plan = s_.good->plan;
     Change change = changeSinceDrawn(s_, false);
     // Time alone never replaces a frame under way: a heavy animated scene
@@ -123,6 +126,7 @@ bool ViewerCore::draw(double budgetMs) {
 Image ViewerCore::finishedPicture() {
     if (!s_.renderer || !s_.good) return {};
     draw(std::numeric_limits<double>::infinity());
+    if (s_.watch) return watchFrame_.picture;
     return s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTexture(s_.shownTexture);
 }
 
@@ -186,6 +190,12 @@ const Image& ViewerCore::probeImage() {
 }
 
 std::string ViewerCore::probeTextAt(int ix, int iy) {
+    if (s_.watch) {  // the watch's own floats, every component, not the picture's bytes
+        const Image& v = watchFrame_.capture.value;
+        if (ix < 0 || iy < 0 || ix >= v.width || iy >= v.height) return "";
+        return fmt::format("({}, {}) of the watch: {} = {}", ix, iy, s_.watch->spec.expression,
+                           watchValueAt(v, watchFrame_.capture.info, ix, iy));
+    }
     const Image& img = probeImage();
     if (img.empty() || ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return "";
     size_t i = (size_t(iy) * size_t(img.width) + size_t(ix)) * 4;
@@ -199,7 +209,7 @@ std::string ViewerCore::probeTextAt(int ix, int iy) {
 const std::string& ViewerCore::probe(double x, double y, int pw, int ph, bool tooltip) {
     s_.probeText.clear();
     if (!s_.probe || !s_.renderer || s_.compare || pw < 1 || ph < 1) return s_.probeText;
-    const Image& img = probeImage();
+    const Image& img = s_.watch ? watchFrame_.capture.value : probeImage();
     if (img.empty()) return s_.probeText;
     double scale = std::min(double(pw) / img.width, double(ph) / img.height);
     double ox = (pw - img.width * scale) / 2, oy = (ph - img.height * scale) / 2;
@@ -265,6 +275,7 @@ bool ViewerCore::apply(const ViewCommand& c, std::string& said) {
         else if (s_.probeText.empty()) said = "probe: the pointer is not over the picture";
         else said = "probe " + s_.probeText;
         return true;
+    case ViewCommand::Kind::Watch: applyWatch(c, said); return true;
     case ViewCommand::Kind::Split:
         if (c.on && textureOnUnit("split", c.unit, s_.compareLeft, said) &&
             textureOnUnit("split", c.right, s_.compareRight, said))
@@ -279,6 +290,88 @@ std::set<int> ViewerCore::takeDrawnPasses() {
     std::set<int> out;
     out.swap(drawnPasses_);
     return out;
+}
+
+void ViewerCore::applyWatch(const ViewCommand& c, std::string& said) {
+    if (c.name == "range") {
+        WatchRange range;
+        std::string why;
+        if (c.text == "auto") watchRange_.reset();
+        else if (parseWatchRange(c.text, range, why)) watchRange_ = range;
+        else {
+            said = "watch range: '" + c.text + "' is not LO,HI with LO less than HI (for example 0,1), or auto";
+            return;
+        }
+        if (s_.watch) s_.watch->range = watchRange_;
+        watchStale_ = true;
+        draw(std::numeric_limits<double>::infinity());
+        said = s_.watch ? "watch " + s_.watchSummary : "watch range set; it applies to the next watch";
+        return;
+    }
+    if (c.text == "off") {
+        s_.watch.reset();
+        s_.watchSummary.clear();
+        if (s_.renderer) s_.renderer->dropWatch();
+        s_.drawAll = true;  // the watched pass drew into the watch's targets, not its own
+        said = "watch: off";
+        return;
+    }
+    s_.watchSpec = c.text;
+    startWatchNow(said);
+}
+
+bool ViewerCore::startWatchNow(std::string& said) {
+    WatchSpec spec;
+    std::string why;
+    s_.watch.reset();
+    s_.watchError.clear();
+    if (!parseWatchSpec(s_.watchSpec, spec, why)) {
+        s_.watchError = said = "watch: " + why;
+        s_.drawAll = true;
+        return false;
+    }
+    if (!s_.renderer || !s_.good) {
+        s_.watchError = said = "watch: no script is shown";
+        return false;
+    }
+    Diagnostics diags;
+    Watch watch;
+    if (!startWatch(spec, s_.good->plan, *s_.renderer, diags, watch)) {
+        for (const auto& d : diags.all()) s_.watchError += formatDiagnostic(d, s_.good->sources);
+        while (!s_.watchError.empty() && s_.watchError.back() == '\n') s_.watchError.pop_back();
+        said = s_.watchError;
+        s_.drawAll = true;
+        return false;
+    }
+    watch.range = watchRange_;
+    s_.watch = std::move(watch);
+    drawing_.reset();  // a frame of the picture under way is dropped: the watch is shown now
+    watchStale_ = true;
+    draw(std::numeric_limits<double>::infinity());
+    said = "watch " + watchTitle(*s_.watch, s_.good->plan) + ": " + s_.watchSummary;
+    return true;
+}
+
+bool ViewerCore::drawWatchFrame() {
+    Change change = changeSinceDrawn(s_, true);
+    if (!watchStale_ && !change.everything && change.programs.empty() && !change.screen) return false;
+    s_.renderer->setSceneTransform(sceneMatrix(s_));
+    const auto start = Clock::now();
+    watchFrame_ = drawWatch(*s_.renderer, *s_.watch, *s_.values, s_.time);
+    s_.renderer->uploadPicture(watchFrame_.picture);
+    s_.watchSummary = watchFrame_.picture.empty() ? "the driver cannot draw into a float target (RGBA32F)"
+                                                  : watchSummary(watchFrame_.stats);
+    s_.drawnWith = s_.values;
+    s_.drawnTime = s_.time;
+    s_.sceneMoved = false;
+    s_.drawAll = false;
+    watchStale_ = false;
+    lastPictureMs_ = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    lastPictureSlices_ = 1;
+    s_.lastFrameMs = lastPictureMs_;  // the panel's frame line: what the watch took, drawn whole
+    s_.lastTimings.clear();
+    ++pictureVersion_;
+    return true;
 }
 
 }  // namespace glimmer

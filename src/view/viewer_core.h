@@ -16,6 +16,9 @@
 //   values     "Show values": the controls' values in a box over the
 //              picture's top left, the same pixels in the window, the page
 //              and a saved PNG
+//   watch      one expression's value over its pass instead of the picture
+//              (pipeline/watch.h), drawn again whole as sliders move, set up
+//              again on every reload; the probe then reads its floats
 //
 // Contract: no GLFW, no Emscripten, no OpenGL calls of its own (the Renderer
 // makes them); Dear ImGui only for the probe's tooltip and the values box. One core per shown
@@ -144,6 +147,13 @@ private:
     // `said`, when no target is on that unit.
     bool textureOnUnit(const char* command, int unit, int& texture, std::string& said) const;
     bool prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Renderer>& renderer, Diagnostics& diags);
+    // `watch` commands (FILE:LINE EXPR, off, range): s_.watch and its picture.
+    void applyWatch(const ViewCommand& c, std::string& said);
+    // Sets up s_.watchSpec on the renderer now shown; false, with the
+    // refusal in s_.watchError and `said`, when it cannot be watched.
+    bool startWatchNow(std::string& said);
+    // Draws the watch again when what it shows changed; true when it did.
+    bool drawWatchFrame();
     // The picture the probe reads (the screen or the shown target, floats
     // where it holds them), read back once per new picture; the probe's
     // text for its pixel (ix, iy), "" outside it.
@@ -168,6 +178,9 @@ private:
     std::string valuesMadeFor_, valuesUploaded_;
     unsigned valuesId_ = 0;
     float uiScale_ = 1.f;
+    WatchFrame watchFrame_;                 // the last watch drawn
+    std::optional<WatchRange> watchRange_;  // `watch range LO,HI`; none: the values' own
+    bool watchStale_ = false;               // a watch set up or its range changed: draw it again
 };
 
 }  // namespace glimmer

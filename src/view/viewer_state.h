@@ -14,6 +14,7 @@
 
 #include "pipeline/load_script.h"
 #include "pipeline/numeric_health.h"
+#include "pipeline/watch.h"
 #include "gl/renderer.h"
 #include "plan/dependencies.h"
 #include "plan/uniform_values.h"
@@ -58,6 +59,12 @@ struct ViewerState {
     // pointer over the picture, which a class watching the picture does not want by default.
     bool probe = false;
     std::string probeText;  // what the probe read at the pointer, for the panel
+    // A watch (pipeline/watch.h): one expression's value over its pass,
+    // shown instead of the picture while on, drawn again as sliders move and
+    // set up again on every reload. The panel's field, the watch's one-line
+    // summary, and why the last watch asked for was refused.
+    std::optional<Watch> watch;
+    std::string watchSpec, watchSummary, watchError;
     std::vector<PassTiming> lastTimings;
     std::vector<TargetHealth> health;  // measured now and then after drawing (a read-back of every target)
     double lastFrameMs = 0;  // the last finished picture's drawing time, all its passes

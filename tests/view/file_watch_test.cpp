@@ -118,12 +118,25 @@ TEST(ViewCommands, ParsesEveryCommand) {
     EXPECT_EQ(split->unit, 6);
     EXPECT_EQ(split->right, -1);
     EXPECT_FALSE(parseViewCommand("split off", err)->on);
+    // A watch keeps its expression as written, spaces and all.
+    auto watch = parseViewCommand("watch bloom.frag:13  rgb + uAdd * rgbblur ", err);
+    ASSERT_TRUE(watch) << err;
+    EXPECT_EQ(watch->kind, ViewCommand::Kind::Watch);
+    EXPECT_EQ(watch->text, "bloom.frag:13  rgb + uAdd * rgbblur");
+    EXPECT_EQ(watch->name, "");
+    auto range = parseViewCommand("watch range 0,1", err);
+    ASSERT_TRUE(range) << err;
+    EXPECT_EQ(range->name, "range");
+    EXPECT_EQ(range->text, "0,1");
+    EXPECT_EQ(parseViewCommand("watch off", err)->text, "off");
 }
 
 TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     std::string err;
     EXPECT_FALSE(parseViewCommand("jump", err));
-    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, values, probe, split, scale, help, frames, quit)");
+    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, values, probe, split, watch, scale, help, frames, quit)");
+    EXPECT_FALSE(parseViewCommand("watch   ", err));
+    EXPECT_EQ(err, "usage: watch FILE:LINE EXPRESSION, watch off, or watch range LO,HI|auto");
     EXPECT_FALSE(parseViewCommand("set uAdd", err));
     EXPECT_EQ(err, "usage: set NAME VALUE");
     EXPECT_FALSE(parseViewCommand("set uAdd lots", err));

@@ -1,0 +1,74 @@
+#include "view/panel_watch.h"
+
+#include <imgui.h>
+
+#include <cstring>
+
+#include <fmt/format.h>
+
+namespace glimmer {
+
+namespace {
+
+ViewCommand watchCommand(std::string text, bool range = false) {
+    ViewCommand c;
+    c.kind = ViewCommand::Kind::Watch;
+    c.text = std::move(text);
+    if (range) c.name = "range";
+    return c;
+}
+
+}  // namespace
+
+void watchControls(ViewerState& s, std::vector<ViewCommand>& asked) {
+    // The field keeps what is typed between frames; a watch asked for
+    // elsewhere (a command, the page's editor) shows up in it.
+    static char field[kMaxWatchExpression + 64] = "";
+    static std::string shown;
+    if (shown != s.watchSpec && !ImGui::IsAnyItemActive()) {
+        std::snprintf(field, sizeof field, "%s", s.watchSpec.c_str());
+        shown = s.watchSpec;
+    }
+    const float em = ImGui::GetFontSize();
+    ImGui::SetNextItemWidth(em * 14);
+    bool enter = ImGui::InputTextWithHint("##watch", "bloom.frag:12 rgbblur", field, sizeof field,
+                                          ImGuiInputTextFlags_EnterReturnsTrue);
+    ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    s.controlRects["Watch"] = {at.x, at.y, size.x, size.y};
+    ImGui::SameLine();
+    if (ImGui::Button("Watch") || enter) asked.push_back(watchCommand(field));
+    if (s.watch) {
+        ImGui::SameLine();
+        if (ImGui::Button("Stop")) asked.push_back(watchCommand("off"));
+    }
+    if (!s.watch && s.watchError.empty()) {
+        ImGui::TextDisabled("a shader's value over its pass: FILE:LINE EXPRESSION");
+        return;
+    }
+    if (!s.watchError.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
+        ImGui::TextWrapped("%s", s.watchError.c_str());
+        ImGui::PopStyleColor();
+        return;
+    }
+    ImGui::TextWrapped("%s", s.watchSummary.c_str());
+    // A fixed range, or the values' own.
+    static float range[2] = {0.f, 1.f};
+    ImGui::SetNextItemWidth(em * 8);
+    ImGui::InputFloat2("##range", range, "%.3g");
+    ImGui::SameLine();
+    if (ImGui::Button("Fix range") && range[0] < range[1])
+        asked.push_back(watchCommand(fmt::format("{},{}", range[0], range[1]), true));
+    ImGui::SameLine();
+    if (ImGui::Button("Own range")) asked.push_back(watchCommand("auto", true));
+    // The marker colours, so a checker in the picture can be read.
+    for (const WatchMarker& m : kWatchMarkers) {
+        ImGui::ColorButton(m.name, ImVec4(m.r / 255.f, m.g / 255.f, m.b / 255.f, 1.f), ImGuiColorEditFlags_NoTooltip,
+                           ImVec2(em * 0.8f, em * 0.8f));
+        ImGui::SameLine(0, em * 0.25f);
+        ImGui::TextDisabled("%s", m.name);
+        if (&m != &kWatchMarkers[2] && &m != &kWatchMarkers[5]) ImGui::SameLine();
+    }
+}
+
+}  // namespace glimmer

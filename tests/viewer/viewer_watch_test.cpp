@@ -1,0 +1,116 @@
+// A watch in the viewer (issue 28): the same picture `render --watch` writes,
+// drawn again as a slider moves; the probe reads its floats; a refusal is
+// said as the command line says it; watch off brings the picture back.
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <fstream>
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include "common/test_folder.h"
+#include "viewer_process.h"
+
+namespace fs = std::filesystem;
+using namespace glimmer_viewer;
+
+namespace {
+
+struct Project {
+    glimmer::testing::TestFolder folder{"glimmer_viewer_watch_"};
+    fs::path dir = folder.path;
+    Project() {
+        fs::path src(GLIMMER_SOURCE_DIR);
+        fs::copy_file(src / "scripts/bloom.glib", dir / "bloom.glib");
+        for (auto f : {"superblur.vert", "superblur.frag", "bloom.vert", "bloom.frag"})
+            fs::copy_file(src / "shaders" / f, dir / f);
+        fs::copy_file(src / "textures/grid.bmp", dir / "grid.bmp");
+    }
+};
+
+int render(const Project& p, const std::string& args) {
+    std::string cmd = fmt::format("cd {} && {} render bloom.glib --size 256x256 {} 2>/dev/null >/dev/null", p.dir.string(),
+                                  GLIMMER_BIN, args);
+    int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// The float at pixel (x, y) (row 0 at the top) of a PFM, channel c.
+float pfmAt(const fs::path& path, int x, int y, int c) {
+    std::ifstream in(path, std::ios::binary);
+    std::string magic;
+    int w = 0, h = 0;
+    float scale = 0;
+    in >> magic >> w >> h >> scale;
+    in.get();
+    in.seekg(std::streamoff((size_t(h - 1 - y) * size_t(w) + size_t(x)) * 3 + size_t(c)) * 4, std::ios::cur);
+    float v = 0;
+    in.read(reinterpret_cast<char*>(&v), 4);
+    return v;
+}
+
+TEST(ViewerWatch, FollowsASliderAsRenderWatchDrawsItAndTheProbeReadsItsFloats) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "256x256"}, p.dir);
+    ASSERT_TRUE(v.waitForLog("glimmer view: loaded")) << v.log();
+    v.send("watch bloom.frag:12 rgbblur");
+    ASSERT_TRUE(v.waitForLog("glimmer view: watch bloom.frag:12 rgbblur, pass 2 (Program Bloom): vec3 over 256x256"))
+        << v.log();
+    v.send("set uHalfSize 5");
+    v.send("save w5.png");
+    v.send("probe 100 60");
+    v.send("set uHalfSize 9");
+    v.send("save w9.png");
+    v.send("watch off");
+    v.send("save plain.png");
+    ASSERT_TRUE(waitForFile(p.dir / "plain.png")) << v.log();
+    ASSERT_TRUE(v.waitForLog("glimmer view: probe (100, 60) of the watch: rgbblur = vec3(")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+
+    ASSERT_EQ(render(p, "--set uHalfSize=5 --watch bloom.frag:12:rgbblur -o r5.png"), 0);
+    ASSERT_EQ(render(p, "--set uHalfSize=9 --watch bloom.frag:12:rgbblur -o r9.png"), 0);
+    ASSERT_EQ(render(p, "-o plain_render.png"), 0);
+    EXPECT_EQ(readBytes(p.dir / "w5.png"), readBytes(p.dir / "r5.png"));
+    EXPECT_EQ(readBytes(p.dir / "w9.png"), readBytes(p.dir / "r9.png"));
+    EXPECT_NE(readBytes(p.dir / "w5.png"), readBytes(p.dir / "w9.png")) << "the watch follows the slider";
+    EXPECT_EQ(readBytes(p.dir / "plain.png"), readBytes(p.dir / "plain_render.png")) << "watch off: the picture";
+
+    // Every component, with a float's digits: the values render --watch writes.
+    ASSERT_EQ(render(p, "--set uHalfSize=5 --watch bloom.frag:12:rgbblur -o r5.pfm"), 0);
+    const std::string want = fmt::format("probe (100, 60) of the watch: rgbblur = vec3({:.9g}, {:.9g}, {:.9g})\n",
+                                         pfmAt(p.dir / "r5.pfm", 100, 60, 0), pfmAt(p.dir / "r5.pfm", 100, 60, 1),
+                                         pfmAt(p.dir / "r5.pfm", 100, 60, 2));
+    EXPECT_NE(v.log().find(want), std::string::npos) << want << v.log();
+}
+
+TEST(ViewerWatch, ARefusalIsSaidAsTheCommandLineSaysItAndAnEditIsWatchedAgain) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "128x128"}, p.dir);
+    ASSERT_TRUE(v.waitForLog("glimmer view: loaded")) << v.log();
+    v.send("watch bloom.frag:11 rgbblur");
+    EXPECT_TRUE(v.waitForLog("glimmer view: bloom.frag:11:51: error: 'rgbblur' is not in scope at line 11: watch a "
+                             "variable declared before this line in the same block or one around it, a uniform, or an "
+                             "input\n"))
+        << v.log();
+    v.send("watch bloom.frag:13 rgbblur * 0.5");
+    ASSERT_TRUE(v.waitForLog("glimmer view: watch bloom.frag:13 rgbblur * 0.5")) << v.log();
+    // The student edits the shader: the watch is set up again on the new text.
+    std::ifstream in(p.dir / "bloom.frag");
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    in.close();
+    const std::string from = "vec3 rgbblur = texture( BlurUnit, vST ).rgb;";
+    ASSERT_NE(text.find(from), std::string::npos);
+    text.replace(text.find(from), from.size(), "vec3 rgbblur = texture( BlurUnit, vST ).rgb * 0.25;");
+    std::ofstream(p.dir / "bloom.frag") << text;
+    v.send("reload");
+    v.send("save edited.png");
+    ASSERT_TRUE(waitForFile(p.dir / "edited.png")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    std::string cmd = fmt::format("cd {} && {} render bloom.glib --size 128x128 --watch 'bloom.frag:13:rgbblur * 0.5' "
+                                  "-o edited_render.png 2>/dev/null >/dev/null", p.dir.string(), GLIMMER_BIN);
+    ASSERT_EQ(std::system(cmd.c_str()), 0);
+    EXPECT_EQ(readBytes(p.dir / "edited.png"), readBytes(p.dir / "edited_render.png"));
+}
+
+}  // namespace
