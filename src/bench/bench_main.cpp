@@ -21,6 +21,7 @@
 #include <fmt/format.h>
 
 #include "pipeline/prepare_script.h"
+#include "pipeline/watch.h"
 #include "pipeline/stats.h"
 #include "backends/context.h"
 #include "gl/renderer.h"
@@ -188,12 +189,38 @@ double timed(const GlApi& gl, bool gpu, int repeat, F f) {
     return median(t);
 }
 
+// What a watch costs (issue 28) against the whole frame, wall clock, on the
+// same renderer: the watch's draw (the watched pass and the passes feeding
+// it, into float targets) and then with the read-back, statistics and
+// picture the viewer makes of it each time a slider moves.
+struct WatchFigure {
+    std::string spec;
+    double draw = 0, frame = 0;
+};
+std::vector<WatchFigure> benchWatches(Renderer& r, const Plan& plan, const UniformValues& v, const GlApi& gl, int repeat) {
+    std::vector<WatchFigure> out;
+    for (const char* text : {"bloom.frag:12:rgbblur", "superblur.frag:27:rgbSum"}) {
+        WatchSpec spec;
+        std::string why;
+        Diagnostics d;
+        Watch w;
+        if (!parseWatchSpec(text, spec, why) || !startWatch(spec, plan, r, d, w)) continue;
+        WatchFigure f{text};
+        f.draw = timed(gl, false, repeat, [&] { r.renderWatch(w.pass, v, 0, w.feeding); });
+        f.frame = timed(gl, false, repeat, [&] { drawWatch(r, w, v, 0); });
+        out.push_back(f);
+    }
+    r.dropWatch();
+    return out;
+}
+
 int benchBackend(const Options& o, const std::string& backendName) {
     BackendChoice choice;
     if (!parseBackend(backendName, choice)) return 2;
     std::vector<double> startup, compile, render, write, loadMs;
     std::map<int, std::vector<double>> passTimes;
     double fullFrame = 0, addChange = 0, slicedFrame = 0, wholeWall = 0;
+    std::vector<WatchFigure> watches;
     int slicesPerFrame = 0;
     bool gpu = false;  // time with GPU timer queries (a GPU) or glFinish and a wall clock
     std::string rendererName;
@@ -274,6 +301,7 @@ int benchBackend(const Options& o, const std::string& backendName) {
                     while (!r->renderSlice(f, o.sliceMs)) ++slices;
                 });
                 slicesPerFrame = slices;
+                watches = benchWatches(*r, loaded.plan, v, timerGl, o.repeat);
                 int k = 0;
                 addChange = timed(timerGl, r->gpuTimers(), o.repeat, [&] {
                     v.set(bloom, "uAdd", {(k++ % 2) ? 1.0 : 3.0});
@@ -362,6 +390,11 @@ int benchBackend(const Options& o, const std::string& backendName) {
     if (slicedFrame > 0)
         fmt::print("{:<28}{:>12.2f}   whole frame {:.2f} ms (wall clock): {:.2f}x, in {} slices of {:g} ms (what view draws)\n",
                    "sliced frame", slicedFrame, wholeWall, slicedFrame / wholeWall, slicesPerFrame, o.sliceMs);
+    for (const auto& w : watches)
+        fmt::print("{:<28}{:>12.2f}   whole frame {:.2f} ms (wall clock): {:.2f}x; draw alone {:.2f} ms ({:.2f}x), the "
+                   "rest read-back, range and picture\n",
+                   "watch " + w.spec.substr(0, w.spec.find(':')), w.frame, wholeWall, w.frame / wholeWall, w.draw,
+                   w.draw / wholeWall);
     fmt::print("{:<28}{:>12.2f}   (full-screen texture copy, {}x{})\n", "copy pass", copy, o.size, o.size);
     fmt::print("{:<28}{:>12.1f}   blur pass / copy pass\n", "blur in copies", hwBlur / copy);
     fmt::print("{:<28}{:>12.1f}   bloom pass / copy pass\n", "bloom in copies", hwBloom / copy);
