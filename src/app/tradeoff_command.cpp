@@ -8,9 +8,7 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -20,6 +18,7 @@
 #include "app/tradeoff_report.h"
 #include "backends/context.h"
 #include "bloom/blur_methods.h"
+#include "bloom/tradeoff_run.h"
 #include "pipeline/console.h"
 #include "process/data_dir.h"
 #include "pipeline/prepare_script.h"
@@ -39,22 +38,6 @@ namespace glimmer {
 // 345 MHz of 1980: the same pass then takes 5.7 times as long) and needs
 // sustained work to raise them again; a CPU renderer only compiles at first draw.
 constexpr auto kWarmUpGpu = std::chrono::milliseconds(1000), kWarmUpCpu = std::chrono::milliseconds(200);
-namespace {
-
-
-int bytesPerTexel(TextureDecl::Format f) {
-    switch (f) {
-    case TextureDecl::Format::RGBA8: return 4;
-    case TextureDecl::Format::RGBA16F: return 8;
-    case TextureDecl::Format::RGBA32F: return 16;
-    case TextureDecl::Format::R11F_G11F_B10F: return 4;
-    }
-    return 4;
-}
-
-RgbImage rgbOf(const Image& img) { return toRgb(img); }
-
-}  // namespace
 
 void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
     CLI::App* sub = app.add_subcommand("tradeoff", "time blur methods against their error; table, CSV, JSON, chart");
@@ -148,7 +131,7 @@ int runTradeoff(const TradeoffOptions& o) {
             return kExitScriptError;
         }
     }
-    const RgbImage in = rgbOf(input);
+    const RgbImage in = toRgb(input);
 
     std::vector<BlurMethod> methods;
     const std::vector<BlurMethod> all = matched ? blurMethodsMatched(o.matchSigma) : blurMethods();
@@ -159,56 +142,25 @@ int runTradeoff(const TradeoffOptions& o) {
     }
     std::vector<TradeoffRow> rows;
     const auto warmUp = renderer->gpuTimers() ? kWarmUpGpu : kWarmUpCpu;
+    TradeoffSettings settings;
+    settings.format = format;
+    settings.repeat = o.repeat;
+    settings.warmUp = warmUp;
+    settings.folder = dir.string();
+    settings.includeDirs = blurKernelDirs(dataDir());
+    const TradeoffInput tradeoffInput{input, in, imagePath};
     Progress progress;
-    for (size_t i = 0; i < methods.size(); ++i) {
-        const BlurMethod& m = methods[i];
-        progress.update(fmt::format("tradeoff: {}/{} {}", i + 1, methods.size(), m.name));
-        fs::path script = dir / "method.glib";
-        std::ofstream(script) << m.script(imagePath, input.width, input.height, textureFormatName(format));
-        Diagnostics diags;
-        LoadedScript loaded;
-        ScriptRequest request;
-        request.script = script.string();
-        request.plan.keepTargets = {m.outputUnit};
-        request.plan.includeDirs = blurKernelDirs(dataDir());
-        request.plan.width = input.width;
-        request.plan.height = input.height;
-        if (!prepareScript(request, *renderer, diags, loaded)) {
-            progress.finish();
-            printDiagnostics(diags, loaded.sources, std::cerr);
-            return kExitScriptError;
-        }
-        UniformValues values(loaded.plan);
-        // Warm-up: llvmpipe compiles shaders at first draw, and a GPU left idle
-        // while the CPU references ran has lowered its clocks. Drawn until the
-        // warm-up time has passed, at least once.
-        const auto warmStart = std::chrono::steady_clock::now();
-        do {
-            renderer->render(values, 0);
-            renderer->finish();
-        } while (std::chrono::steady_clock::now() - warmStart < warmUp);
-        std::vector<double> times;
-        for (int r = 0; r < o.repeat; ++r) {
-            std::vector<PassTiming> t;
-            renderer->render(values, 0, &t);
-            double sum = 0;
-            for (const auto& p : t) sum += p.ms;
-            times.push_back(sum);
-        }
-        Image out = renderer->readTextureFloat(loaded.plan.finalUnits.at(m.outputUnit));
-        RgbImage gpu = rgbOf(out);
-        TradeoffRow row;
-        row.method = &m;
-        row.health = healthOf(out.f32.data(), out.width, out.height);
-        row.time = spreadOf(times);
-        row.ms = row.time.median;
-        row.numerical = compare(gpu, m.reference(in));
-        row.sigma = impulseSigma(m.reference);
-        int radius = int(std::ceil(4 * row.sigma));
-        row.model = compare(gpu, gaussianBlur(in, row.sigma, radius, Wrap::Repeat));
-        double texels = double(input.width) * double(input.height);
-        row.megabytes = texels * (m.tapsPerPixel + m.texelsWrittenPerPixel) * bytesPerTexel(format) / 1e6;
-        rows.push_back(row);
+    Diagnostics diags;
+    SourceTexts sources;
+    if (!measureBlurMethods(
+            *renderer, tradeoffInput, methods, settings,
+            [&](size_t i, size_t n, const BlurMethod& m) {
+                progress.update(fmt::format("tradeoff: {}/{} {}", i + 1, n, m.name));
+            },
+            rows, diags, sources)) {
+        progress.finish();
+        printDiagnostics(diags, sources, std::cerr);
+        return kExitScriptError;
     }
     // The floor, measured in this run on this context: a hand-written pass of
     // 9 taps a pixel at the input's size and the targets' format.

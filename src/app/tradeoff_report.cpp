@@ -26,10 +26,7 @@ void printTradeoffTable(const std::vector<TradeoffRow>& rows) {
 }
 
 FastestVerdict printTradeoffVerdict(const std::vector<TradeoffRow>& rows, int repeat) {
-    // A method far from a Gaussian is not a candidate however fast it is.
-    std::vector<TimedCandidate> candidates;
-    for (const auto& r : rows)
-        if (r.model.psnr >= 40) candidates.push_back({r.method->name, r.time});
+    const std::vector<TimedCandidate> candidates = nearGaussianCandidates(rows);
     const FastestVerdict verdict = fastestBeyondNoise(candidates);
     const char* within = "within 40 dB PSNR of the Gaussian of its own sigma";
     if (verdict.names.empty()) {

@@ -5,27 +5,10 @@
 #include <string>
 #include <vector>
 
-#include "bloom/blur_methods.h"
-#include "metrics/metrics.h"
 #include "bloom/timing_verdict.h"
+#include "bloom/tradeoff_run.h"  // TradeoffRow
 
 namespace glimmer {
-
-struct TradeoffRow {
-    const BlurMethod* method = nullptr;
-    double ms = 0;      // the median run
-    TimingSpread time;  // every run: median, fastest, slowest
-    double sigma = 0;   // the method's own impulse sigma (achieved, under --match-sigma)
-    double megabytes = 0;
-    // The texel-rate floor for the method's taps: taps per pixel times the
-    // hand-written probe's time per tap (Renderer::texelRateMs: its fastest
-    // run; same run, format and size); 0 when the probe could not run. The
-    // table's min/flr compares the method's fastest run with it: on a shared
-    // GPU, only the fastest runs are free of other work.
-    double floorMs = 0;
-    ErrorStats numerical, model;
-    Health health;  // of the blurred target: NaN, Inf, negative, above 65504
-};
 
 void printTradeoffTable(const std::vector<TradeoffRow>& rows);
 
