@@ -196,6 +196,7 @@ double timed(const GlApi& gl, bool gpu, int repeat, F f) {
 struct WatchFigure {
     std::string spec;
     double draw = 0, frame = 0;
+    double alone = 0;  // the watched pass alone, its feeding passes kept (the viewer after a uAdd change)
 };
 std::vector<WatchFigure> benchWatches(Renderer& r, const Plan& plan, const UniformValues& v, const GlApi& gl, int repeat) {
     std::vector<WatchFigure> out;
@@ -208,6 +209,8 @@ std::vector<WatchFigure> benchWatches(Renderer& r, const Plan& plan, const Unifo
         WatchFigure f{text};
         f.draw = timed(gl, false, repeat, [&] { r.renderWatch(w.pass, v, 0, w.feeding); });
         f.frame = timed(gl, false, repeat, [&] { drawWatch(r, w, v, 0); });
+        const std::vector<bool> none(plan.passes.size(), false);
+        f.alone = timed(gl, false, repeat, [&] { drawWatch(r, w, v, 0, &none); });
         out.push_back(f);
     }
     r.dropWatch();
@@ -395,6 +398,10 @@ int benchBackend(const Options& o, const std::string& backendName) {
                    "rest read-back, range and picture\n",
                    "watch " + w.spec.substr(0, w.spec.find(':')), w.frame, wholeWall, w.frame / wholeWall, w.draw,
                    w.draw / wholeWall);
+    for (const auto& w : watches)
+        if (w.spec.rfind("bloom", 0) == 0)
+            fmt::print("{:<28}{:>12.2f}   the watched pass alone, the blur kept (what view draws when uAdd moves)\n",
+                       "watch bloom.frag, uAdd", w.alone);
     fmt::print("{:<28}{:>12.2f}   (full-screen texture copy, {}x{})\n", "copy pass", copy, o.size, o.size);
     fmt::print("{:<28}{:>12.1f}   blur pass / copy pass\n", "blur in copies", hwBlur / copy);
     fmt::print("{:<28}{:>12.1f}   bloom pass / copy pass\n", "bloom in copies", hwBloom / copy);

@@ -156,9 +156,10 @@ bool startWatch(const WatchSpec& spec, const Plan& plan, Renderer& renderer, Dia
     return true;
 }
 
-WatchFrame drawWatch(Renderer& renderer, const Watch& watch, const UniformValues& values, double time) {
+WatchFrame drawWatch(Renderer& renderer, const Watch& watch, const UniformValues& values, double time,
+                     const std::vector<bool>* feeding) {
     WatchFrame f;
-    f.capture = renderer.renderWatch(watch.pass, values, time, watch.feeding);
+    f.capture = renderer.renderWatch(watch.pass, values, time, feeding ? *feeding : watch.feeding);
     f.stats = watchStats(f.capture.value, f.capture.info, watch.range);
     f.picture = watchPicture(f.capture.value, f.capture.info, f.stats);
     return f;

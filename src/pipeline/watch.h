@@ -44,7 +44,10 @@ struct WatchFrame {
     WatchStats stats;
     Image picture;  // RGBA8, row 0 at the top; empty when the driver cannot draw float targets
 };
-WatchFrame drawWatch(Renderer& renderer, const Watch& watch, const UniformValues& values, double time);
+// `feeding`: the passes to draw first, when not all of watch.feeding need
+// it (a viewer after a change that reaches only some of them).
+WatchFrame drawWatch(Renderer& renderer, const Watch& watch, const UniformValues& values, double time,
+                     const std::vector<bool>* feeding = nullptr);
 
 // "bloom.frag:12 rgbblur, pass 2 (Program Bloom)": what a front end shows
 // beside the picture.

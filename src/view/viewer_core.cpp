@@ -356,8 +356,16 @@ bool ViewerCore::drawWatchFrame() {
     Change change = changeSinceDrawn(s_, true);
     if (!watchStale_ && !change.everything && change.programs.empty() && !change.screen) return false;
     s_.renderer->setSceneTransform(sceneMatrix(s_));
+    // Of the passes that feed the watched one, only those the change reaches
+    // (a uAdd slider does not draw the blur again); all of them when the
+    // watch is new, as a frame dropped for it may have left them half drawn.
+    std::vector<bool> feeding = s_.watch->feeding;
+    if (!watchStale_ && !change.everything) {
+        const std::vector<bool> reached = passesToRun(s_.good->plan, change);
+        for (size_t p = 0; p < feeding.size(); ++p) feeding[p] = feeding[p] && p < reached.size() && reached[p];
+    }
     const auto start = Clock::now();
-    watchFrame_ = drawWatch(*s_.renderer, *s_.watch, *s_.values, s_.time);
+    watchFrame_ = drawWatch(*s_.renderer, *s_.watch, *s_.values, s_.time, &feeding);
     s_.renderer->uploadPicture(watchFrame_.picture);
     s_.watchSummary = watchFrame_.picture.empty() ? "the driver cannot draw into a float target (RGBA32F)"
                                                   : watchSummary(watchFrame_.stats);

@@ -62,6 +62,10 @@ TEST(ViewerWatch, FollowsASliderAsRenderWatchDrawsItAndTheProbeReadsItsFloats) {
     v.send("probe 100 60");
     v.send("set uHalfSize 9");
     v.send("save w9.png");
+    // A slider of the watched pass alone: the blur that feeds it is kept, not drawn again.
+    v.send("watch bloom.frag:13 rgb + uAdd*rgbblur");
+    v.send("set uAdd 3");
+    v.send("save wadd.png");
     v.send("watch off");
     v.send("save plain.png");
     ASSERT_TRUE(waitForFile(p.dir / "plain.png")) << v.log();
@@ -70,7 +74,9 @@ TEST(ViewerWatch, FollowsASliderAsRenderWatchDrawsItAndTheProbeReadsItsFloats) {
 
     ASSERT_EQ(render(p, "--set uHalfSize=5 --watch bloom.frag:12:rgbblur -o r5.png"), 0);
     ASSERT_EQ(render(p, "--set uHalfSize=9 --watch bloom.frag:12:rgbblur -o r9.png"), 0);
-    ASSERT_EQ(render(p, "-o plain_render.png"), 0);
+    ASSERT_EQ(render(p, "--set uHalfSize=9 --set uAdd=3 --watch 'bloom.frag:13:rgb + uAdd*rgbblur' -o radd.png"), 0);
+    ASSERT_EQ(render(p, "--set uHalfSize=9 --set uAdd=3 -o plain_render.png"), 0);
+    EXPECT_EQ(readBytes(p.dir / "wadd.png"), readBytes(p.dir / "radd.png"));
     EXPECT_EQ(readBytes(p.dir / "w5.png"), readBytes(p.dir / "r5.png"));
     EXPECT_EQ(readBytes(p.dir / "w9.png"), readBytes(p.dir / "r9.png"));
     EXPECT_NE(readBytes(p.dir / "w5.png"), readBytes(p.dir / "w9.png")) << "the watch follows the slider";
