@@ -27,6 +27,8 @@
 #   widen the panel; the presentation mode larger, still in view;
 # - reload: a reload mid-lesson keeps the picked folder, the script, the
 #   file open in the editor and every slider's value;
+# - watch: a watch in the page is byte for byte the shader hand-edited in the
+#   page to write the value, and render --watch's picture; a refusal in its words;
 # - engine_chromium, engine_firefox, engine_webkit: the page's checks (the
 #   seed drawn as render draws it, Save PNG, a slider and a live edit, a
 #   typo kept with the picture, a reload keeping the edit) in each of
@@ -42,7 +44,7 @@ tools/build-web.sh "$web" >/dev/null || { echo "web build failed (tools/build-we
 log="$(mktemp)"
 trap 'rm -f "$log"' EXIT
 passed=0 failed=0
-for group in check_matches_desktop pictures lessons live_view lesson_security opening both_shells hidpi layout reload \
+for group in check_matches_desktop pictures lessons live_view lesson_security opening both_shells hidpi layout reload watch \
              engine_chromium engine_firefox engine_webkit; do
   tests/web/$group.sh "$g" "$web" | tee "$log"
   rc=${PIPESTATUS[0]}

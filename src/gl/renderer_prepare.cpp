@@ -15,6 +15,10 @@ namespace glimmer {
 using namespace renderer_detail;
 
 bool Renderer::prepare(const Plan& plan, const Assets& assets, Diagnostics& diags, bool everything) {
+    // An error an earlier call left (a front end's own GL, a read-back) is
+    // not this script's: cleared, so the check at the end sees only its own.
+    for (int i = 0; i < 16 && gl_->GetError() != GL_NO_ERROR; ++i) {
+    }
     releaseAll();
     plan_ = std::make_unique<Plan>(plan);
     textures_.assign(plan.textures.size(), {});

@@ -76,6 +76,18 @@ Image Renderer::readTexture(int texture) const {
     if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
     const TextureObject& t = textures_[size_t(texture)];
     if (t.target != GL_TEXTURE_2D) return {};  // 3-D textures and cube maps are not pictures
+    if (gl_->es && t.floatData) {
+        // OpenGL ES reads a float target only as floats (as bytes it is an
+        // error, and nothing is read): read those, and store them as the
+        // desktop's glGetTexImage does, clamped to 0..1 and rounded.
+        Image floats = readTextureFloat(texture);
+        Image img = Image::rgba8(floats.width, floats.height);
+        for (size_t i = 0; i < floats.f32.size() && i < img.u8.size(); ++i) {
+            float v = floats.f32[i];
+            img.u8[i] = static_cast<unsigned char>(std::nearbyint((v > 0 ? (v < 1 ? v : 1.f) : 0.f) * 255.f));
+        }
+        return img;
+    }
     Image img = Image::rgba8(t.width, t.height);
     gl_->BindTexture(GL_TEXTURE_2D, t.id);
     gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);

@@ -1,12 +1,12 @@
 #include "pipeline/watch.h"
 
-#include <charconv>
 #include <cmath>
 
 #include <fmt/format.h>
 
 #include "plan/dependencies.h"
 #include "shader/glsl_scan.h"
+#include "util/numbers.h"
 
 namespace glimmer {
 namespace {
@@ -178,7 +178,7 @@ bool parseWatchRange(const std::string& text, WatchRange& out, std::string& why)
     auto number = [](std::string_view s, double& v) {
         while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
         while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
-        auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), v);
+        auto [end, ec] = parseDouble(s.data(), s.data() + s.size(), v);  // libc++ of the page has no float from_chars
         return !s.empty() && ec == std::errc() && end == s.data() + s.size() && std::isfinite(v);
     };
     if (comma == std::string::npos || !number(std::string_view(text).substr(0, comma), out.lo) ||

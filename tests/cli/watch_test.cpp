@@ -72,7 +72,7 @@ TEST(CliWatch, AWatchInRangeZeroToOneEqualsTheHandEditedShaderByteForByte) {
         {"scripts/exercises/ex2_threshold.glib", "bright.frag", 13, "luminance > uThreshold ? c : vec3(0.)",
          "luminance > uThreshold ? c : vec3(0.)", 6, {"uThreshold=0.5"}},
         {"scripts/exercises/ex2_threshold.glib", "add.frag", 14, "blur", "blur", -1, {"uSigma=1"}},
-        {"scripts/exercises/ex3_separable.glib", "gauss1d.frag", 18, "texel * 100.", "vec3( texel * 100., 0. )", 6, {}},
+        {"scripts/exercises/ex3_separable.glib", "gauss1d.frag", 18, "texel * 100.", "vec3( texel * 100., 0. )", 7, {}},
         {"scripts/exercises/ex5_hdr.glib", "tonemap.frag", 14, "mapped", "mapped", -1, {}},
     };
     for (const HandEdit& c : cases) {

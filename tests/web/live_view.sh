@@ -113,4 +113,16 @@ Texture2D 6 512 512 RGBA16F     # after the horizontal pass
 [ "$got" = "$want" ]
 tally $? "a float target without EXT_color_buffer_float must be one error at its line: $got"
 
+# An RGBA16F target inspected and saved in the page is render --dump's
+# picture of it (OpenGL ES reads a float target only as floats: read as
+# bytes it was an error, the saved picture empty, and the next script's
+# load failed on the error left behind).
+printf 'show 6\nsave f16.png\nquit\n' > "$pictures/f16.commands"
+NODE_PATH=/usr/share/nodejs timeout 120 node tools/page-commands.mjs "file://$page" scripts/exercises/ex3_separable.glib \
+  96x96 0 "$pictures/f16.commands" "$pictures" > /dev/null 2>&1
+"$g" render scripts/exercises/ex3_separable.glib --size 96x96 --dump "6=$pictures/f16-desktop.png" -o "$pictures/x.png" \
+  > /dev/null 2>&1
+[ -s "$pictures/f16.png" ] && same_picture "$pictures/f16-desktop.png" "$pictures/f16.png"
+tally $? "the page's saved RGBA16F target is not render --dump's"
+
 finish

@@ -18,6 +18,10 @@
 //   editor.saveCurrent(writeBack)   writeBack(path, text) -> Promise<bool>;
 //                                   false: the page downloads it instead
 //   editor.revertCurrent()          the file on show as the folder had it; its kept edit goes
+//   editor.watchHere()              watches it (the Watch button, Alt-W); what the core said
+//   editor.watchAtCursor()          {path, line, expression} for a watch (issue 28): the selection
+//                                   on one line, else the variable under the cursor (with its
+//                                   .field and [index]); null on a .glib or an empty spot
 "use strict";
 
 // .glib: a command word starts each line; '#' starts a comment; uniform
@@ -86,6 +90,31 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
     pending = setTimeout(() => onEdit(shown), 350);
   });
 
+  // Watch (issue 28): the value under the cursor (or the selection) over
+  // its pass, through the viewer core's `watch` command, as `glimmer view`
+  // runs it; the panel then shows its range and the probe its floats. A
+  // button beside Save file and Revert, and Alt-W in the editor.
+  const watchHere = () => {
+    const page = globalThis.glimmerPage;
+    const at = api.watchAtCursor();
+    if (!page) return "";
+    if (!at) { say("Watch: put the cursor on a variable of a shader (or select an expression)", true); return ""; }
+    const said = page.command(`watch ${at.path}:${at.line} ${at.expression}`);
+    const first = said.split("\n")[0];
+    say(first, !first.startsWith("watch "));
+    return said;
+  };
+  const watchButtons = document.createElement("span");
+  watchButtons.id = "watch-buttons";
+  watchButtons.innerHTML = ' <button id="watch" title="the value under the cursor (or the selection) over its pass (Alt-W)">' +
+    'Watch</button> <button id="watch-off" title="back to the picture">Stop watching</button>';
+  tabs.parentElement.appendChild(watchButtons);
+  watchButtons.querySelector("#watch").onclick = watchHere;
+  watchButtons.querySelector("#watch-off").onclick = () => {
+    if (globalThis.glimmerPage) say(globalThis.glimmerPage.command("watch off"));
+  };
+  cm.setOption("extraKeys", { "Alt-W": () => { watchHere(); } });
+
   const mark = (messages) => {
     lastMessages = messages;
     for (const w of widgets) w.clear();
@@ -110,8 +139,9 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
     }
   };
 
-  return {
+  const api = {
     cm,
+    watchHere,
     setFolder: (id) => { folder = id; originals = {}; shown = null; },
     // Kept edits of this folder's files back into the file system (a
     // reloaded page, a folder picked again); returns the paths restored.
@@ -164,6 +194,23 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
       if (ok) { localStorage.removeItem(key(shown)); delete originals[shown]; say(`${shown}: saved`); }
       return ok;
     },
+    watchAtCursor: () => {
+      if (!shown || shown.endsWith(".glib")) return null;
+      const from = cm.getCursor("from"), to = cm.getCursor("to");
+      if (from.line === to.line && from.ch !== to.ch) {
+        const expression = cm.getRange(from, to).trim();
+        return expression ? { path: shown, line: from.line + 1, expression } : null;
+      }
+      // The word under the cursor, with what it is made of on either side:
+      // rgbblur.g, weights[i], vST.
+      const text = cm.getLine(from.line);
+      const part = /[A-Za-z0-9_.\[\]]/;
+      let a = from.ch, b = from.ch;
+      while (a > 0 && part.test(text[a - 1])) --a;
+      while (b < text.length && part.test(text[b])) ++b;
+      const expression = text.slice(a, b).replace(/^[.\]]+|[.\[]+$/g, "");
+      return /^[A-Za-z_]/.test(expression) ? { path: shown, line: from.line + 1, expression } : null;
+    },
     // The file as the folder had it: the kept edit goes.
     revertCurrent: () => {
       if (!shown || !(shown in originals)) return;
@@ -175,4 +222,5 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
       onEdit(shown);
     },
   };
+  return api;
 };
