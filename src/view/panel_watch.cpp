@@ -31,7 +31,7 @@ void watchControls(ViewerState& s, std::vector<ViewCommand>& asked) {
     }
     const float em = ImGui::GetFontSize();
     ImGui::SetNextItemWidth(em * 14);
-    bool enter = ImGui::InputTextWithHint("##watch", "bloom.frag:12 rgbblur", field, sizeof field,
+    bool enter = ImGui::InputTextWithHint("##watch", "watch: bloom.frag:12 rgbblur", field, sizeof field,
                                           ImGuiInputTextFlags_EnterReturnsTrue);
     ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
     s.controlRects["Watch"] = {at.x, at.y, size.x, size.y};
@@ -41,17 +41,23 @@ void watchControls(ViewerState& s, std::vector<ViewCommand>& asked) {
         ImGui::SameLine();
         if (ImGui::Button("Stop")) asked.push_back(watchCommand("off"));
     }
-    if (!s.watch && s.watchError.empty()) {
-        ImGui::TextDisabled("a shader's value over its pass: FILE:LINE EXPRESSION");
-        return;
-    }
+    // Idle, the field is all (its hint says what to type): one line of the
+    // panel, so the sliders stay where the projector shows them.
+    if (!s.watch && s.watchError.empty()) return;
     if (!s.watchError.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.45f, 0.4f, 1.f));
         ImGui::TextWrapped("%s", s.watchError.c_str());
         ImGui::PopStyleColor();
         return;
     }
-    ImGui::TextWrapped("%s", s.watchSummary.c_str());
+    // The summary a part a line (type and range; each component; each count),
+    // so a narrow panel cuts none of it off.
+    for (size_t at = 0; at <= s.watchSummary.size();) {
+        size_t end = s.watchSummary.find("; ", at);
+        if (end == std::string::npos) end = s.watchSummary.size();
+        ImGui::TextWrapped("%s", s.watchSummary.substr(at, end - at).c_str());
+        at = end + 2;
+    }
     // A fixed range, or the values' own.
     static float range[2] = {0.f, 1.f};
     ImGui::SetNextItemWidth(em * 8);
