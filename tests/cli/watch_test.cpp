@@ -195,6 +195,24 @@ TEST(CliWatch, AVertexWatchShowsTheValueInterpolatedAcrossThePrimitive) {
     EXPECT_LT(worst, 1e-5) << "interpolated, not through 8 bits (1/255 apart)";
 }
 
+TEST(CliWatch, IntsUintsAndBoolsAreWatchedAndSaidAsWhatTheyAre) {
+    const std::pair<const char*, const char*> cases[] = {
+        {"superblur.frag:16:halfSize", "int over 512x512: range 5 .. 5 (its own)"},
+        {"superblur.frag:10:ires", "ivec2 over 512x512: range 512 .. 512 (its own); x 512 .. 512, y 512 .. 512"},
+        {"superblur.frag:16:uHalfSize > 3", "bool over 512x512: range 1 .. 1 (its own)"},
+        {"superblur.frag:16:bvec2(uHalfSize > 9, uHalfSize > 3)",
+         "bvec2 over 512x512: range 0 .. 1 (its own); x 0 .. 0, y 1 .. 1"},
+        {"superblur.frag:16:uvec3(1u, 2u, 3u)", "uvec3 over 512x512: range 1 .. 3 (its own); x 1 .. 1, y 2 .. 2, z 3 .. 3"},
+    };
+    TempDir dir;
+    for (const auto& [watch, said] : cases) {
+        RunResult r = runGlimmer({"render", "scripts/bloom.glib", "--backend", "osmesa", "--set", "uHalfSize=5",
+                                  "--watch", watch, "-o", dir.file("k.png")});
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        EXPECT_EQ(countOf(r.out, std::string(": ") + said + "\n"), 1) << watch << ": " << r.out;
+    }
+}
+
 TEST(CliWatch, ScopeLineAndTypeErrorsAreExact) {
     struct Case {
         const char* watch;
