@@ -125,7 +125,7 @@ TEST(WatchRewrite, RefusalsSayWhy) {
               "1: line 2 is outside any function: a watch goes on a line inside a function's body, such as main's");
     EXPECT_EQ(error(kBloom, 40, "uAdd"), "0: the shader has 9 lines; there is no line 40");
     EXPECT_EQ(error("void main() {\n\n  // nothing\n}\n", 3, "x"),
-              "0: line 3 holds no statement (it is blank, a comment or a directive): watch a line with one");
+              "1: line 3 holds no statement (it is blank, a comment or a directive): watch a line with one");
     EXPECT_EQ(error(kBloom, 7, "a; discard"), "0: a watch takes one expression, and ';' cannot be in one");
     EXPECT_EQ(error(kBloom, 7, "f(a"), "0: the expression's brackets do not balance (a '(' never closes)");
     EXPECT_EQ(error(kBloom, 7, "  "), "0: the expression to watch is empty");
