@@ -13,6 +13,7 @@
 #include "shader/precision_strip.h"
 #include "shader/uniform_declaration.h"
 #include "shader/uninitialized_globals.h"
+#include "shader/watch_rewrite.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
     using namespace glimmer;
@@ -29,5 +30,14 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     (void)mayDiscard(text);
     (void)uniformDeclarationLine(text, word.empty() ? "uAdd" : word);
     (void)globalSetByMainFirst(text, word.empty() ? "gK" : word, 1);
+    // A watch at a line taken from the text's own length, of its first word.
+    const int line = 1 + int(size % 64);
+    WatchedStage watched = watchFragment(text, line, word.empty() ? "gl_FragCoord" : word);
+    if (watched.ok && watched.text.size() < text.size()) __builtin_trap();  // a rewrite only adds
+    (void)watchVertex(text, line, "x");
+    (void)watchFragmentOfVertex(text);
+    WatchSpec spec;
+    std::string why;
+    (void)parseWatchSpec(text, spec, why);
     return 0;
 }
