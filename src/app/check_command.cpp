@@ -1,5 +1,6 @@
 #include <iostream>
 
+#include "app/commands.h"
 #include "process/session.h"
 #include "pipeline/watch.h"
 #include "pipeline/web_check.h"
@@ -19,18 +20,8 @@ int runCheck(const CheckOptions& o) {
     Session s;
     if (auto code = openSession(o, {}, true, s)) return *code;
     if (!o.watch.empty()) {
-        WatchSpec spec;
-        std::string why;
-        if (!parseWatchSpec(o.watch, spec, why)) {
-            std::cerr << "glimmer: error: --watch: " << why << "\n";
-            return kExitUsage;
-        }
-        Diagnostics diags;
         Watch watch;
-        if (!startWatch(spec, s.loaded.plan, *s.renderer, diags, watch)) {
-            printDiagnostics(diags, s.loaded.sources, std::cerr);
-            return kExitScriptError;
-        }
+        if (auto code = startWatchOption(o.watch, s, watch)) return *code;
         std::cout << "watch " << watchTitle(watch, s.loaded.plan) << ": can be watched\n";
     }
     if (o.listInputs)

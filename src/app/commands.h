@@ -28,6 +28,10 @@ int runRender(const RenderOptions& options);
 std::optional<int> checkWatchOptions(const RenderOptions& options);
 struct Session;
 int runRenderWatch(const RenderOptions& options, Session& session);
+// --watch's text, parsed and set up on the session (render and check): an
+// exit code, with the message printed, when it cannot be watched.
+struct Watch;
+std::optional<int> startWatchOption(const std::string& text, Session& session, Watch& watch);
 void addBatchCommand(CLI::App& app, BatchOptions& options);
 int runBatch(const BatchOptions& options);
 void addBatchMergeCommand(CLI::App& app, BatchMergeOptions& options);

@@ -43,24 +43,30 @@ std::optional<int> checkWatchOptions(const RenderOptions& o) {
     return std::nullopt;
 }
 
-int runRenderWatch(const RenderOptions& o, Session& s) {
+std::optional<int> startWatchOption(const std::string& text, Session& s, Watch& watch) {
     WatchSpec spec;
     std::string why;
-    if (!parseWatchSpec(o.watch, spec, why)) {
+    if (!parseWatchSpec(text, spec, why)) {
         std::cerr << "glimmer: error: --watch: " << why << "\n";
         return kExitUsage;
     }
+    Diagnostics diags;
+    if (!startWatch(spec, s.loaded.plan, *s.renderer, diags, watch)) {
+        printDiagnostics(diags, s.loaded.sources, std::cerr);
+        return kExitScriptError;
+    }
+    return std::nullopt;
+}
+
+int runRenderWatch(const RenderOptions& o, Session& s) {
+    std::string why;
     WatchRange range;
     if (!o.watchRange.empty() && !parseWatchRange(o.watchRange, range, why)) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitUsage;
     }
-    Diagnostics diags;
     Watch watch;
-    if (!startWatch(spec, s.loaded.plan, *s.renderer, diags, watch)) {
-        printDiagnostics(diags, s.loaded.sources, std::cerr);
-        return kExitScriptError;
-    }
+    if (auto code = startWatchOption(o.watch, s, watch)) return *code;
     if (!o.watchRange.empty()) watch.range = range;
     WatchFrame frame = drawWatch(*s.renderer, watch, *s.values, o.time);
     if (frame.picture.empty()) {

@@ -126,10 +126,16 @@ std::vector<float> readPfm(const std::string& path, int& width, int& height) {
     return rows;
 }
 
+// `glimmer render` of the calibration scene at 40x40 with `extra`.
+RunResult renderCalibration(const std::vector<std::string>& extra) {
+    std::vector<std::string> args = {"render", cliData("watch/calibration.glib"), "--backend", "osmesa", "--size", "40x40"};
+    args.insert(args.end(), extra.begin(), extra.end());
+    return runGlimmer(args);
+}
+
 TEST(CliWatch, TheFloatFileHoldsTheValuesAsTheCpuComputesThem) {
     TempDir dir;
-    RunResult r = runGlimmer({"render", cliData("watch/calibration.glib"), "--backend", "osmesa", "--size", "40x40",
-                              "--watch", "calibration.frag:10:exact", "-o", dir.file("exact.pfm")});
+    RunResult r = renderCalibration({"--watch", "calibration.frag:10:exact", "-o", dir.file("exact.pfm")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, "watch calibration.frag:10 exact, pass 1 (Program Calibration): vec3 over 40x40: range -9.875 .. "
                      "1560 (its own); x -9.875 .. -0.125, y 0.25 .. 1560, z 1000 .. 1040\n");
@@ -151,12 +157,11 @@ TEST(CliWatch, TheFloatFileHoldsTheValuesAsTheCpuComputesThem) {
 
 TEST(CliWatch, NanAndInfAreCountedAndValuesOutsideAFixedRangeToo) {
     TempDir dir;
-    RunResult r = runGlimmer({"render", cliData("watch/calibration.glib"), "--backend", "osmesa", "--size", "40x40",
-                              "--watch", "calibration.frag:13:odd", "-o", dir.file("odd.png")});
+    RunResult r = renderCalibration({"--watch", "calibration.frag:13:odd", "-o", dir.file("odd.png")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, "watch calibration.frag:13 odd, pass 1 (Program Calibration): float over 40x40: range 25.5 .. "
                      "39.5 (its own); 400 pixels NaN; 600 pixels Inf\n");
-    r = runGlimmer({"render", cliData("watch/calibration.glib"), "--backend", "osmesa", "--size", "40x40", "--watch",
+    r = renderCalibration({"--watch",
                     "calibration.frag:13:odd", "--watch-range", "30,35", "-o", dir.file("odd.png")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.out, "watch calibration.frag:13 odd, pass 1 (Program Calibration): float over 40x40: range 30 .. 35 "
@@ -177,8 +182,7 @@ TEST(CliWatch, NanAndInfAreCountedAndValuesOutsideAFixedRangeToo) {
 
 TEST(CliWatch, AVertexWatchShowsTheValueInterpolatedAcrossThePrimitive) {
     TempDir dir;
-    RunResult r = runGlimmer({"render", cliData("watch/calibration.glib"), "--backend", "osmesa", "--size", "40x40",
-                              "--watch", "quad.vert:10:vST", "-o", dir.file("st.pfm")});
+    RunResult r = renderCalibration({"--watch", "quad.vert:10:vST", "-o", dir.file("st.pfm")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(countOf(r.out, "watch quad.vert:10 vST, pass 1 (Program Calibration): vec2 over 40x40"), 1) << r.out;
     int w = 0, h = 0;

@@ -13,7 +13,7 @@
 #include <gtest/gtest.h>
 
 #include "image/image.h"
-#include "common/test_folder.h"
+#include "seed_project.h"
 #include "viewer_process.h"
 #include "x11_driver.h"
 
@@ -23,16 +23,12 @@ using namespace std::chrono_literals;
 
 namespace {
 
-struct Project {
-    glimmer::testing::TestFolder folder{"glimmer_lesson_test_"};
-    fs::path dir = folder.path;
-    Project() {
+// The seed and the lit shapes scene, whose mouse turns it.
+struct Project : SeedProject {
+    Project() : SeedProject("glimmer_lesson_test_") {
         fs::path src(GLIMMER_SOURCE_DIR);
-        fs::copy_file(src / "scripts/bloom.glib", dir / "bloom.glib");
         fs::copy_file(src / "scripts/shapes.glib", dir / "shapes.glib");
-        for (auto f : {"superblur.vert", "superblur.frag", "bloom.vert", "bloom.frag", "lit.vert", "lit.frag"})
-            fs::copy_file(src / "shaders" / f, dir / f);
-        fs::copy_file(src / "textures/grid.bmp", dir / "grid.bmp");
+        for (auto f : {"lit.vert", "lit.frag"}) fs::copy_file(src / "shaders" / f, dir / f);
     }
 };
 

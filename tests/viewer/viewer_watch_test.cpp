@@ -9,7 +9,7 @@
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
-#include "common/test_folder.h"
+#include "seed_project.h"
 #include "viewer_process.h"
 
 namespace fs = std::filesystem;
@@ -17,16 +17,8 @@ using namespace glimmer_viewer;
 
 namespace {
 
-struct Project {
-    glimmer::testing::TestFolder folder{"glimmer_viewer_watch_"};
-    fs::path dir = folder.path;
-    Project() {
-        fs::path src(GLIMMER_SOURCE_DIR);
-        fs::copy_file(src / "scripts/bloom.glib", dir / "bloom.glib");
-        for (auto f : {"superblur.vert", "superblur.frag", "bloom.vert", "bloom.frag"})
-            fs::copy_file(src / "shaders" / f, dir / f);
-        fs::copy_file(src / "textures/grid.bmp", dir / "grid.bmp");
-    }
+struct Project : SeedProject {
+    Project() : SeedProject("glimmer_viewer_watch_") {}
 };
 
 int render(const Project& p, const std::string& args) {
