@@ -42,45 +42,42 @@ TEST(WatchRewrite, CaptureGoesRightAfterTheStatementOnTheLine) {
     EXPECT_EQ(std::count(w.text.begin(), w.text.end(), '\n'), std::count(kBloom, kBloom + strlen(kBloom), '\n') + 3);
 }
 
+// Line `shown` of `src` with `expression` watched at `line`; the refusal
+// when there is one.
+std::string watchedLine(std::string_view src, int line, std::string_view expression, int shown) {
+    WatchedStage w = watchFragment(src, line, expression);
+    return w.ok ? lineAfter(w, shown) : "refused: " + w.error;
+}
+
 TEST(WatchRewrite, AStatementOverSeveralLinesIsWatchedWhereItEnds) {
     const char* src = "void main() {\n  float a = 1. +\n     2.;\n  gl_FragColor = vec4(a);\n}\n";
-    WatchedStage w = watchFragment(src, 2, "a");
-    ASSERT_TRUE(w.ok) << w.error;
-    EXPECT_EQ(lineAfter(w, 3), "     2.; glimmer_watch_store(a);");
+    EXPECT_EQ(watchedLine(src, 2, "a", 3), "     2.; glimmer_watch_store(a);");
 }
 
 TEST(WatchRewrite, ALoneBodyOfAnIfOrLoopGetsBraces) {
     const char* src = "void main() {\n  float s = 0.;\n  for (int i = 0; i < 4; i++)\n    s += float(i);\n"
                       "  if (s > 1.) s = 1.;\n  gl_FragColor = vec4(s);\n}\n";
-    WatchedStage w = watchFragment(src, 4, "i");
-    ASSERT_TRUE(w.ok) << w.error;
-    EXPECT_EQ(lineAfter(w, 4), "    { s += float(i); glimmer_watch_store(i); }");
-    WatchedStage w2 = watchFragment(src, 5, "s");
-    ASSERT_TRUE(w2.ok) << w2.error;
-    EXPECT_EQ(lineAfter(w2, 5), "  if (s > 1.) { s = 1.; glimmer_watch_store(s); }");
+    EXPECT_EQ(watchedLine(src, 4, "i", 4), "    { s += float(i); glimmer_watch_store(i); }");
+    EXPECT_EQ(watchedLine(src, 5, "s", 5), "  if (s > 1.) { s = 1.; glimmer_watch_store(s); }");
     // The ';' of a for header ends no statement: the loop's block is watched.
-    WatchedStage w3 = watchFragment("void main() {\n  for (int i = 0;\n       i < 2; i++) {\n    gl_FragColor = vec4(0.);\n  }\n}\n", 2, "i");
-    ASSERT_TRUE(w3.ok) << w3.error;
-    EXPECT_EQ(lineAfter(w3, 3), "       i < 2; i++) { glimmer_watch_store(i);");
+    EXPECT_EQ(watchedLine("void main() {\n  for (int i = 0;\n       i < 2; i++) {\n    gl_FragColor = vec4(0.);\n  }\n}\n",
+                          2, "i", 3),
+              "       i < 2; i++) { glimmer_watch_store(i);");
 }
 
 TEST(WatchRewrite, AReturnOrDiscardIsWatchedBeforeItLeaves) {
     const char* src = "float f(float x) {\n  float y = x * 2.;\n  return y;\n}\n"
                       "void main() {\n  if (f(1.) > 3.) discard;\n  gl_FragColor = vec4(1.);\n}\n";
-    WatchedStage w = watchFragment(src, 3, "y");
-    ASSERT_TRUE(w.ok) << w.error;
-    EXPECT_EQ(lineAfter(w, 3), "   glimmer_watch_store(y); return y;");
-    WatchedStage w2 = watchFragment(src, 6, "f(1.)");
-    ASSERT_TRUE(w2.ok) << w2.error;
-    EXPECT_EQ(lineAfter(w2, 6), "  if (f(1.) > 3.) {  glimmer_watch_store(f(1.)); discard; }");
+    EXPECT_EQ(watchedLine(src, 3, "y", 3), "   glimmer_watch_store(y); return y;");
+    EXPECT_EQ(watchedLine(src, 6, "f(1.)", 6), "  if (f(1.) > 3.) {  glimmer_watch_store(f(1.)); discard; }");
 }
 
 TEST(WatchRewrite, BracesOnTheLineWatchTheBlockStartOrEnd) {
     const char* src = "void main()\n{\n  vec3 c = vec3(0.);\n  for (int i = 0; i < 3; i++) {\n    c += vec3(1.);\n  }\n"
                       "  gl_FragColor = vec4(c, 1.);\n}\n";
-    EXPECT_EQ(lineAfter(watchFragment(src, 4, "i"), 4), "  for (int i = 0; i < 3; i++) { glimmer_watch_store(i);");
-    EXPECT_EQ(lineAfter(watchFragment(src, 6, "c"), 6), "   glimmer_watch_store(c);}");
-    EXPECT_EQ(lineAfter(watchFragment(src, 8, "c"), 8), " glimmer_watch_store(c); }");
+    EXPECT_EQ(watchedLine(src, 4, "i", 4), "  for (int i = 0; i < 3; i++) { glimmer_watch_store(i);");
+    EXPECT_EQ(watchedLine(src, 6, "c", 6), "   glimmer_watch_store(c);}");
+    EXPECT_EQ(watchedLine(src, 8, "c", 8), " glimmer_watch_store(c); }");
 }
 
 TEST(WatchRewrite, OwnOutputsBecomeGlobalsAndOldShadersUseFragData) {
