@@ -27,6 +27,9 @@
 #   widen the panel; the presentation mode larger, still in view;
 # - reload: a reload mid-lesson keeps the picked folder, the script, the
 #   file open in the editor and every slider's value;
+# - tradeoff: Measure blurs on this machine, clicked: every method of the
+#   desktop's `glimmer tradeoff --size 256x256`, its errors the desktop's,
+#   real times, the page painting meanwhile (llvmpipe, under Xvfb);
 # - watch: a watch in the page is byte for byte the shader hand-edited in the
 #   page to write the value, and render --watch's picture; a refusal in its words;
 # - engine_chromium, engine_firefox, engine_webkit: the page's checks (the
@@ -45,7 +48,7 @@ log="$(mktemp)"
 trap 'rm -f "$log"' EXIT
 passed=0 failed=0
 for group in check_matches_desktop pictures lessons live_view lesson_security opening both_shells hidpi layout reload watch \
-             engine_chromium engine_firefox engine_webkit; do
+             tradeoff engine_chromium engine_firefox engine_webkit; do
   tests/web/$group.sh "$g" "$web" | tee "$log"
   rc=${PIPESTATUS[0]}
   count="$(sed -n "s/^web $group: \([0-9]*\) passed, \([0-9]*\) failed$/\1 \2/p" "$log" | tail -1)"

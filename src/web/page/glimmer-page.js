@@ -383,6 +383,7 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
   // Presentation mode (glimmer-present.js): the Present button, ?present, Esc.
   const presentation = presentationMode(canvas, viewCommand, () => live !== null);
   const present = presentation.present;
+  blurMeasurement(glimmer);  // Measure blurs on this machine (glimmer-tradeoff.js)
 
   canvas.tabIndex = 0;  // the panel's text fields take keys once the canvas is clicked
   canvas.addEventListener("mousedown", () => canvas.focus());
