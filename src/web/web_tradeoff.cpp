@@ -10,8 +10,10 @@
 //       `glimmer tradeoff --size WxH --methods WORDS --repeat N`.
 //   glimmer_tradeoff_step() -> 1 while there is more to do, 0 once every
 //       method is measured, -1 when a method could not run (its diagnostics
-//       in glimmer_last_output()). Each call is one piece: a method prepared
-//       and warmed up, one timed run, or its read-back and CPU references.
+//       in glimmer_last_output()). Each call is one piece: a method prepared,
+//       a part of its warm-up, one timed run, or its read-back and CPU
+//       references (the longest: superblur h11's reference, 529 taps a
+//       pixel in doubles, about half a second here).
 //   glimmer_tradeoff_status() -> what the last step did, "3/12 superblur h11: run 2 of 5".
 //   glimmer_tradeoff_rows() -> the rows so far as JSON (see rowsJson).
 // Timing: WebGL's finish() returns before Chromium's GPU process has drawn
@@ -21,6 +23,7 @@
 #include <GLES3/gl3.h>
 #include <emscripten/emscripten.h>
 
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -44,6 +47,10 @@ using namespace glimmer;
 // module's file system; the kernel files come with the bundled lesson.
 constexpr const char* kFolder = "/tmp/glimmer-tradeoff";
 constexpr const char* kBundledLesson = "/lesson";
+// The desktop's warm-up on a CPU renderer (200 ms, app/tradeoff_command.cpp),
+// given in frames of at most about 100 ms each (at least one draw each).
+constexpr auto kWarmUpStep = std::chrono::milliseconds(100);
+constexpr int kWarmUpSteps = 2;
 
 // Blocks until `texture` holds what was drawn into it: one pixel of it read
 // through a framebuffer of this file's own, the bindings put back as they were.
@@ -75,7 +82,7 @@ struct Run {
     std::vector<BlurMethod> methods;
     std::vector<TradeoffRow> rows;
     std::unique_ptr<BlurMeasurement> current;  // the method being measured
-    bool warm = false;                          // current is prepared and warmed up
+    int warmUps = 0;                            // warm-up steps current has had
     std::string status;
 };
 std::unique_ptr<Run> run;
@@ -181,6 +188,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_tradeoff_start(int width, int height, int repea
         return -1;
     }
     r->settings.repeat = repeat;
+    r->settings.warmUp = kWarmUpStep;
     r->settings.folder = kFolder;
     r->settings.includeDirs = blurKernelDirs(kBundledLesson);
     r->settings.waitFor = waitForTexture;
@@ -204,8 +212,13 @@ EMSCRIPTEN_KEEPALIVE int glimmer_tradeoff_step() {
             run->renderer.reset();
             return -1;
         }
+        run->warmUps = 0;
+        run->status = at + ": prepared";
+        return 1;
+    }
+    if (run->warmUps < kWarmUpSteps) {
         run->current->warmUp();
-        run->status = at + ": warmed up";
+        run->status = fmt::format("{}: warming up ({} of {})", at, ++run->warmUps, kWarmUpSteps);
         return 1;
     }
     if (run->current->runsTimed() < run->settings.repeat) {

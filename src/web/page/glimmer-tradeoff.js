@@ -1,8 +1,8 @@
 // "Measure blurs": `glimmer tradeoff` on the student's own machine (the
 // lesson's minutes 30 to 38; web_tradeoff.cpp runs the desktop's measuring
 // code). Made by glimmer-page.js once the module is up. The methods run
-// one piece of work per animation frame (a method prepared and warmed up,
-// one timed run, its CPU references), so the page keeps painting and
+// one piece of work per animation frame (a method prepared, a part of its
+// warm-up, one timed run, its CPU references), so the page keeps painting and
 // shows how far it is; the table is filled when the last method is done.
 //
 // For the tests (tests/web/tradeoff.sh): #blurs has data-state "running",
