@@ -64,6 +64,8 @@ tally $? "the packed lesson with '<!--<script>' did not open and draw (or its te
 python3 - "$page" "$pictures/tricky.html" <<'PY'
 import base64, hashlib, re, sys
 ok = True
+# The packed page inlines every script the page names (a new one of the page's is one more).
+page_scripts = len(re.findall(r'<script src="[^"]*"></script>', open(sys.argv[1], encoding="utf-8").read()))
 for path in sys.argv[1:]:
     text = open(path, encoding="utf-8").read()
     m = re.search(r'<meta http-equiv="Content-Security-Policy" content="([^"]*)">', text)
@@ -75,7 +77,7 @@ for path in sys.argv[1:]:
     if path.endswith("tricky.html"):
         inline = re.findall(r"<script>(.*?)</script>", text, re.S)
         hashes = {"'sha256-" + base64.b64encode(hashlib.sha256(c.encode()).digest()).decode() + "'" for c in inline}
-        good = good and "'self'" not in script and len(inline) == 8 and hashes <= set(script) and "<script src=" not in text
+        good = good and "'self'" not in script and len(inline) == page_scripts and hashes <= set(script) and "<script src=" not in text
     else:
         good = good and "<script>" not in text
     if not good:
