@@ -133,13 +133,8 @@ int runTradeoff(const TradeoffOptions& o) {
     }
     const RgbImage in = toRgb(input);
 
-    std::vector<BlurMethod> methods;
-    const std::vector<BlurMethod> all = matched ? blurMethodsMatched(o.matchSigma) : blurMethods();
-    for (auto& m : all) {
-        bool keep = o.methods.empty();
-        for (const auto& w : o.methods) keep |= m.name.find(w) != std::string::npos;
-        if (keep) methods.push_back(m);
-    }
+    const std::vector<BlurMethod> methods =
+        methodsNamed(matched ? blurMethodsMatched(o.matchSigma) : blurMethods(), o.methods);
     std::vector<TradeoffRow> rows;
     const auto warmUp = renderer->gpuTimers() ? kWarmUpGpu : kWarmUpCpu;
     TradeoffSettings settings;

@@ -210,4 +210,14 @@ double impulseSigma(const std::function<RgbImage(const RgbImage&)>& reference) {
     return sum > 0 ? std::sqrt(m2 / sum) : 0.0;
 }
 
+std::vector<BlurMethod> methodsNamed(const std::vector<BlurMethod>& all, const std::vector<std::string>& words) {
+    std::vector<BlurMethod> out;
+    for (const BlurMethod& m : all) {
+        bool keep = words.empty();
+        for (const auto& w : words) keep |= m.name.find(w) != std::string::npos;
+        if (keep) out.push_back(m);
+    }
+    return out;
+}
+
 }  // namespace glimmer

@@ -33,6 +33,10 @@ std::vector<std::string> blurKernelDirs(const std::string& dataDir);
 // The methods, by family, each at a few strengths.
 std::vector<BlurMethod> blurMethods();
 
+// The methods of `all` whose name holds one of `words` ("sep9", "h11");
+// every one when `words` is empty (tradeoff's --methods, the page's list).
+std::vector<BlurMethod> methodsNamed(const std::vector<BlurMethod>& all, const std::vector<std::string>& words);
+
 // One method of each family (superblur, sep9, linear5, dual Kawase) with the
 // parameter that brings its impulse sigma nearest `sigma`: uHalfSize for
 // superblur (at most kMatchMaxHalfSize), the number of horizontal+vertical

@@ -178,11 +178,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_tradeoff_start(int width, int height, int repea
     std::istringstream list(words ? words : "");
     std::vector<std::string> wanted;
     for (std::string w; list >> w;) wanted.push_back(w);
-    for (const BlurMethod& m : blurMethods()) {
-        bool keep = wanted.empty();
-        for (const auto& w : wanted) keep |= m.name.find(w) != std::string::npos;
-        if (keep) r->methods.push_back(m);
-    }
+    r->methods = methodsNamed(blurMethods(), wanted);
     if (r->methods.empty()) {
         fail(fmt::format("no method's name holds any of '{}'", words ? words : ""));
         return -1;
