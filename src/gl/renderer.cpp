@@ -140,20 +140,24 @@ Renderer::Target* Renderer::passTarget(const Pass& pass) const {
     return screen_.get();
 }
 
-void Renderer::drawPass(const Pass& pass, Target* target, const UniformValues& values, double time) {
-    gl_->BindFramebuffer(GL_FRAMEBUFFER, target->fbo);
+void Renderer::bindForPass(const Target& target, size_t colourBuffers, bool depth) {
+    gl_->BindFramebuffer(GL_FRAMEBUFFER, target.fbo);
     std::vector<GLenum> buffers;
-    for (size_t k = 0; k < std::max<size_t>(1, pass.targets.size()); ++k) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + k));
+    for (size_t k = 0; k < colourBuffers; ++k) buffers.push_back(GLenum(GL_COLOR_ATTACHMENT0 + k));
     gl_->DrawBuffers(GLsizei(buffers.size()), buffers.data());
-    gl_->Viewport(0, 0, target->width, target->height);
-    if (pass.needsDepth && target->depth) {
+    gl_->Viewport(0, 0, target.width, target.height);
+    if (depth) {
         gl_->Enable(GL_DEPTH_TEST);
         gl_->DepthFunc(GL_LESS);
-        // Depth from an earlier frame would hide this one's drawing.
-        gl_->Clear(GL_DEPTH_BUFFER_BIT);
     } else {
         gl_->Disable(GL_DEPTH_TEST);
     }
+}
+
+void Renderer::drawPass(const Pass& pass, Target* target, const UniformValues& values, double time) {
+    const bool depth = pass.needsDepth && target->depth;
+    bindForPass(*target, std::max<size_t>(1, pass.targets.size()), depth);
+    if (depth) gl_->Clear(GL_DEPTH_BUFFER_BIT);  // depth from an earlier frame would hide this one's drawing
     for (const auto& s : pass.steps) {
         if (s.kind == Step::Kind::Clear) {
             if (clearIsHidden(pass, s, target)) continue;

@@ -204,6 +204,9 @@ private:
     unsigned attachDepth(int width, int height);
     // The pass's framebuffer (the screen's when it writes no texture).
     Target* passTarget(const Pass& pass) const;
+    // Binds `target` for drawing into its first `colourBuffers` attachments,
+    // over its whole size, with the depth test on (less) or off.
+    void bindForPass(const Target& target, size_t colourBuffers, bool depth);
     // Binds the target and draws the pass's steps into it (under the scissor
     // when one is on); then, once the whole pass is drawn, finishPass remakes
     // the mip chains of the textures it wrote.

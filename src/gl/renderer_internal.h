@@ -167,5 +167,19 @@ inline const char* primitiveName(GLenum p) {
     }
 }
 
+// Reads a 2-D texture whole through a framebuffer of its own with
+// glReadPixels, rows bottom first as glGetTexImage gives them: OpenGL ES has
+// no glGetTexImage, and a watch's targets are read this way on both.
+inline void readThroughFramebuffer(const GlApi& gl, unsigned texture, int width, int height, GLenum type, void* out) {
+    unsigned fbo = 0;
+    gl.GenFramebuffers(1, &fbo);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
+    gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl.ReadPixels(0, 0, width, height, GL_RGBA, type, out);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    gl.DeleteFramebuffers(1, &fbo);
+}
+
 }  // namespace renderer_detail
 }  // namespace glimmer

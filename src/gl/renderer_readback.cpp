@@ -18,24 +18,6 @@ Image Renderer::readScreen() const {
     return flipRows(std::move(img));
 }
 
-namespace {
-
-// OpenGL ES cannot read a texture whole (no glGetTexImage): it is attached to
-// a framebuffer of its own and read with glReadPixels, rows bottom first as
-// glGetTexImage gives them.
-void readThroughFramebuffer(const GlApi& gl, unsigned texture, int width, int height, GLenum type, void* out) {
-    unsigned fbo = 0;
-    gl.GenFramebuffers(1, &fbo);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
-    gl.FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, texture, 0);
-    gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl.ReadPixels(0, 0, width, height, GL_RGBA, type, out);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    gl.DeleteFramebuffers(1, &fbo);
-}
-
-}  // namespace
-
 Image Renderer::readTextureFloat(int texture) const {
     if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
     const TextureObject& t = textures_[size_t(texture)];

@@ -54,20 +54,6 @@ std::vector<std::optional<std::string>> Renderer::programTexts(int program) cons
     return programs_[size_t(program)]->texts;
 }
 
-namespace {
-
-// Reads colour attachment `k` of the bound framebuffer as float RGBA, row 0 at the top.
-Image readAttachment(const GlApi& gl, int k, int width, int height) {
-    Image img = Image::rgbaF32(width, height);
-    gl.ReadBuffer(GLenum(GL_COLOR_ATTACHMENT0 + k));
-    gl.PixelStorei(GL_PACK_ALIGNMENT, 4);
-    gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_FLOAT, img.f32.data());
-    img.f32 = flipRows(img.f32, height);
-    return img;
-}
-
-}  // namespace
-
 WatchCapture Renderer::renderWatch(int passIndex, const UniformValues& values, double time,
                                    const std::vector<bool>& feeding) {
     WatchCapture out;
@@ -100,15 +86,7 @@ WatchCapture Renderer::renderWatch(int passIndex, const UniformValues& values, d
     if (pass.needsDepth) target.depth = attachDepth(width, height);
     const bool complete = gl_->CheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
     if (complete) {
-        const GLenum buffers[2] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-        gl_->DrawBuffers(2, buffers);
-        gl_->Viewport(0, 0, width, height);
-        if (pass.needsDepth) {
-            gl_->Enable(GL_DEPTH_TEST);
-            gl_->DepthFunc(GL_LESS);
-        } else {
-            gl_->Disable(GL_DEPTH_TEST);
-        }
+        bindForPass(target, 2, pass.needsDepth);
         const GLbitfield clear = GL_COLOR_BUFFER_BIT | (pass.needsDepth ? GL_DEPTH_BUFFER_BIT : 0);
         gl_->ClearColor(0, 0, 0, 0);  // nothing drawn: info x = 0
         gl_->Clear(clear);
@@ -124,8 +102,13 @@ WatchCapture Renderer::renderWatch(int passIndex, const UniformValues& values, d
             if (!watched) gl_->ColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
         }
         std::swap(programs_[size_t(watchedProgram_)], watch_);
-        out.value = readAttachment(*gl_, 0, width, height);
-        out.info = readAttachment(*gl_, 1, width, height);
+        for (int k = 0; k < 2; ++k) {  // the value, then what is known of it; row 0 at the top
+            Image& img = k ? out.info : out.value;
+            img = Image::rgbaF32(width, height);
+            gl_->PixelStorei(GL_PACK_ALIGNMENT, 4);
+            readThroughFramebuffer(*gl_, textures[k], width, height, GL_FLOAT, img.f32.data());
+            img.f32 = flipRows(img.f32, height);
+        }
     }
     gl_->UseProgram(0);
     gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
