@@ -295,12 +295,6 @@ std::string fragmentMain(const Flavour& f, const std::string& value, const std::
            "; gl_FragData[1] = " + info + "; }\n";
 }
 
-int columnOf(std::string_view text, int line, std::string_view what) {
-    std::string_view l = lineOf(text, line);
-    size_t at = l.find(what);
-    return at == std::string_view::npos ? 0 : int(at) + 1;
-}
-
 // The shared part of the two stage rewrites that hold the capture.
 WatchedStage capture(std::string_view source, int line, std::string_view expression, bool fragment) {
     WatchedStage out;
@@ -357,7 +351,6 @@ WatchedStage capture(std::string_view source, int line, std::string_view express
     if (fragment) globals += outputsToGlobals(code, bodies, f, edits);
     edits.push_back({beforeFunctions(code, bodies), 0, globals});
     out.text = applyEdits(source, edits) + lineEnding(source);
-    out.captureColumn = columnOf(out.text, line, call);
     out.ok = true;
     return out;
 }

@@ -54,9 +54,6 @@ struct WatchedStage {
     std::string text;
     std::string error;
     int column = 0;
-    // The offset in `text` of the capture on the watched line: where the
-    // driver reports an error in the expression (pipeline/watch.cpp).
-    int captureColumn = 0;
 };
 
 // The fragment stage with `expression` watched at `line`.
