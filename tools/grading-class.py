@@ -224,6 +224,8 @@ def grade(args, folder, cases):
            "--size", "128x128", "--jobs", str(args.jobs)]
     if args.backend:
         cmd += ["--backend", args.backend]
+    if args.no_sandbox:
+        cmd += ["--no-sandbox"]
     loads = []
     try:
         for _ in range(args.load):
@@ -289,6 +291,7 @@ def main():
     ap.add_argument("--skip-slow", action="store_true", help="leave out otto, the slow but correct blur")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--backend", default="", help="glimmer's --backend (default: its own)")
+    ap.add_argument("--no-sandbox", action="store_true", help="grade with --no-sandbox")
     args = ap.parse_args()
     folder = Path(args.folder)
     cases = write_class(folder, args.skip_slow)

@@ -361,6 +361,19 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         jobStudent.push_back(i);
     }
 
+    // A picture of one colour is a verdict only when a fresh worker, alone on
+    // the machine, draws it again (process/batch.h: on a shared GPU another
+    // process can reset this one's work, which then reads back as zeros).
+    studentSettings.recheck = [&](size_t, const BatchResult& result) {
+        if (result.written.size() != settings.size()) return false;
+        for (size_t k = 0; k < settings.size(); ++k) {
+            Image student;
+            std::string why;
+            if (loadImage(result.written[k], student, why) && comparePictures(student, solutionPictures[k]).blank)
+                return true;
+        }
+        return false;
+    };
     Progress progress;
     runBatch(jobs, studentSettings, [&](size_t done, size_t total) { progress.update(fmt::format("batch: {}/{} graded", done, total)); },
              [&](size_t j, const BatchResult& result) {
@@ -375,11 +388,13 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                      r.verdict = "error";
                      r.notes = failureNote(result.diagnostics);
                      if (r.notes == "timed out" || r.notes == "the renderer crashed") {
-                         // The first setting without its picture is where it stopped.
-                         const size_t k = settingsDrawn(jobs[j]);
-                         r.notes += k < settings.size() ? fmt::format(" at setting {} ({} of {})", settingLabel(settings[k]),
-                                                                      k + 1, settings.size())
-                                                        : " after its last setting";
+                         // Where it stopped, as the worker last said (process/batch_worker.h).
+                         const int k = result.stoppedAt;
+                         r.notes += k == BatchResult::kStoppedPreparing ? std::string(" while loading and compiling")
+                                    : k >= 0 && size_t(k) < settings.size()
+                                        ? fmt::format(" at setting {} ({} of {})", settingLabel(settings[size_t(k)]),
+                                                      k + 1, settings.size())
+                                        : std::string();
                      }
                      keep(r);
                      return;

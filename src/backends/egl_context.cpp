@@ -37,10 +37,18 @@ bool hasExtension(const char* list, const char* ext) {
 
 enum class Api { DesktopCompat, Es30 };
 
+// A GPU is shared by every process that draws on it: when one of them hangs
+// the GPU or is killed mid-draw, the driver may reset the engine, and the
+// others' work is lost without an error unless their contexts asked to be
+// told (glGetGraphicsResetStatus; batch's workers ask after every picture
+// and draw the script again elsewhere). EGL 1.5's own attribute; a driver
+// that refuses it gets the plain context.
+enum class Resets { Ignore, Report };
+
 // Makes a surfaceless context on an initialised display: desktop GL 3.3
 // compatibility, or OpenGL ES 3.0, the feature level of WebGL 2.
 std::unique_ptr<GlContext> makeContext(EGLDisplay dpy, const std::string& name, std::string& error,
-                                       Api api = Api::DesktopCompat) {
+                                       Api api = Api::DesktopCompat, Resets resets = Resets::Ignore) {
     const bool es = api == Api::Es30;
     if (!hasExtension(eglQueryString(dpy, EGL_EXTENSIONS), "EGL_KHR_surfaceless_context")) {
         error = name + ": no EGL_KHR_surfaceless_context";
@@ -67,7 +75,13 @@ std::unique_ptr<GlContext> makeContext(EGLDisplay dpy, const std::string& name, 
                                      EGL_CONTEXT_OPENGL_PROFILE_MASK,
                                      EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT, EGL_NONE};
     const EGLint esAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 0, EGL_NONE};
-    EGLContext ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, es ? esAttribs : contextAttribs);
+    const EGLint reportingAttribs[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTEXT_MINOR_VERSION, 3,
+                                       EGL_CONTEXT_OPENGL_PROFILE_MASK, EGL_CONTEXT_OPENGL_COMPATIBILITY_PROFILE_BIT,
+                                       EGL_CONTEXT_OPENGL_RESET_NOTIFICATION_STRATEGY, EGL_LOSE_CONTEXT_ON_RESET,
+                                       EGL_NONE};
+    EGLContext ctx = EGL_NO_CONTEXT;
+    if (!es && resets == Resets::Report) ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, reportingAttribs);
+    if (ctx == EGL_NO_CONTEXT) ctx = eglCreateContext(dpy, config, EGL_NO_CONTEXT, es ? esAttribs : contextAttribs);
     if (ctx == EGL_NO_CONTEXT) {
         error = name + (es ? ": cannot create an OpenGL ES 3.0 context" : ": cannot create a GL 3.3 compatibility context");
         eglTerminate(dpy);
@@ -114,7 +128,7 @@ std::unique_ptr<GlContext> createEglDeviceContext(std::string& error) {
         if (hasExtension(queryDeviceString(devices[i], EGL_EXTENSIONS), "EGL_MESA_device_software")) continue;
         EGLDisplay dpy = getPlatformDisplay(EGL_PLATFORM_DEVICE_EXT, devices[i], nullptr);
         if (dpy == EGL_NO_DISPLAY || !eglInitialize(dpy, nullptr, nullptr)) continue;
-        if (auto c = makeContext(dpy, "egl-device", error)) return c;
+        if (auto c = makeContext(dpy, "egl-device", error, Api::DesktopCompat, Resets::Report)) return c;
     }
     if (error.empty()) error = "egl-device: no GPU among the EGL devices";
     return nullptr;

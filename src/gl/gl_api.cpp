@@ -18,11 +18,48 @@ bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error) {
         GLIMMER_GL_DESKTOP_FUNCTIONS(GLIMMER_GL_LOAD)
     }
 #undef GLIMMER_GL_LOAD
+#ifndef __EMSCRIPTEN__
+    // A context that reports resets says so in its strategy (ARB_robustness,
+    // core since 4.5 and ES 3.2); asking any other context for the status
+    // would call a stub on some drivers.
+    if (gl.GetIntegerv && gl.GetError) {
+        GLint strategy = 0;
+        gl.GetIntegerv(GL_RESET_NOTIFICATION_STRATEGY_ARB, &strategy);
+        while (gl.GetError() != GL_NO_ERROR) {
+        }
+        if (strategy == GL_LOSE_CONTEXT_ON_RESET_ARB)
+            for (const char* name : {"glGetGraphicsResetStatus", "glGetGraphicsResetStatusARB", "glGetGraphicsResetStatusKHR",
+                                     "glGetGraphicsResetStatusEXT"})
+                if (!gl.GetGraphicsResetStatus)
+                    gl.GetGraphicsResetStatus = reinterpret_cast<decltype(gl.GetGraphicsResetStatus)>(getProc(name));
+    }
+#endif
     if (!missing.empty()) {
         error = "the OpenGL driver lacks " + missing;
         return false;
     }
     return true;
+}
+
+std::string contextFailure(const GlApi& gl) {
+    std::string why;
+    if (gl.GetGraphicsResetStatus) {
+        switch (gl.GetGraphicsResetStatus()) {
+        case GL_NO_ERROR: break;
+        case GL_GUILTY_CONTEXT_RESET_ARB: why = "the GPU was reset while this script drew (the driver blames this script)"; break;
+        case GL_INNOCENT_CONTEXT_RESET_ARB: why = "the GPU was reset by another process while this script drew"; break;
+        default: why = "the GPU was reset while this script drew"; break;
+        }
+    }
+    if (!gl.GetError) return why;
+    for (int k = 0; k < 64; ++k) {  // a lost context may report its error for ever
+        const GLenum e = gl.GetError();
+        if (e == GL_NO_ERROR) break;
+        if (!why.empty()) continue;
+        if (e == GL_OUT_OF_MEMORY) why = "the GPU driver ran out of memory (GL_OUT_OF_MEMORY)";
+        else if (e == 0x0507 /* GL_CONTEXT_LOST */) why = "the GL context was lost (GL_CONTEXT_LOST)";
+    }
+    return why;
 }
 
 }  // namespace glimmer

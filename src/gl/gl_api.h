@@ -62,6 +62,12 @@ struct GlApi {
     // desktop entries are null, whatever getProcAddress would hand out for
     // them (Mesa's EGL returns a stub for any name).
     bool es = false;
+    // Set only on a context made to report resets (EGL's
+    // LOSE_CONTEXT_ON_RESET, asked for by the GPU backends): a GPU shared by
+    // several processes may reset the whole engine when one of them hangs
+    // or is killed mid-draw, and an innocent context then reads back zeros
+    // without an error. Null elsewhere (see contextFailure()).
+    GLenum(GLAPIENTRY* GetGraphicsResetStatus)() = nullptr;
 };
 
 
@@ -69,5 +75,12 @@ struct GlApi {
 // ones. False, and the missing names in `error`, if any it needs is absent.
 // Call with the context current (it reads GL_VERSION).
 bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error);
+
+// Why the context can no longer be trusted to have drawn what it was asked
+// to, or "" when it can: a reset reported by the driver (guilty, innocent or
+// unknown), GL_CONTEXT_LOST, or GL_OUT_OF_MEMORY (a texture or buffer the
+// driver could not allocate draws as black). Drains glGetError; other errors
+// (a script's own misuse) are not failures of the machine.
+std::string contextFailure(const GlApi& gl);
 
 }  // namespace glimmer

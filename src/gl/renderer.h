@@ -165,6 +165,10 @@ public:
 
     // The screen, row 0 at the top. RGBA8.
     Image readScreen() const;
+    // Whether what was drawn and read so far can be trusted: "" or why not
+    // (a GPU reset, a lost context, the driver out of memory; gl/gl_api.h's
+    // contextFailure). batch's workers ask after every picture.
+    std::string contextFailure() const;
     // A texture of the plan (a render target or a loaded image), row 0 at the
     // top; empty if it was never made because nothing needed it.
     Image readTexture(int texture) const;

@@ -18,6 +18,8 @@ Image Renderer::readScreen() const {
     return flipRows(std::move(img));
 }
 
+std::string Renderer::contextFailure() const { return glimmer::contextFailure(*gl_); }
+
 Image Renderer::readTextureFloat(int texture) const {
     if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};
     const TextureObject& t = textures_[size_t(texture)];

@@ -1,4 +1,6 @@
 #include "process/batch.h"
+#include "process/batch_worker.h"
+#include "util/json.h"
 #include "process/child_guard.h"
 
 #include <poll.h>
@@ -9,24 +11,11 @@
 #include <algorithm>
 #include <chrono>
 #include <filesystem>
-#include <cmath>
-#include <cstring>
-#include <cstdio>
-#include <map>
-#include <memory>
+#include <deque>
 #include <set>
-#include <sstream>
 
 #include <fmt/format.h>
 
-#include "backends/context.h"
-#include "pipeline/console.h"
-#include "pipeline/numeric_health.h"
-#include "pipeline/prepare_script.h"
-#include "image/image.h"
-#include "plan/uniform_values.h"
-#include "util/json.h"
-#include "util/numbers.h"
 
 namespace glimmer {
 namespace {
@@ -35,254 +24,16 @@ using Clock = std::chrono::steady_clock;
 
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-// One line of --report (util/json.h: how strings and numbers are written).
-std::string resultJson(const BatchJob& job, int exitCode, const std::string& diagnostics, const std::string& written,
-                       double prepareMs, double renderMs, double writeMs, const std::string& health) {
-    auto ms = [](double v) { return jsonNumber(std::round(v * 100) / 100); };  // to the hundredth, as before
-    Json line;
-    line["script"] = job.script;
-    line["exit"] = exitCode;
-    line["output"] = written.empty() ? Json(nullptr) : Json(written);
-    line["diagnostics"] = diagnostics;
-    line["ms"] = {{"prepare", ms(prepareMs)}, {"render", ms(renderMs)}, {"write", ms(writeMs)}};
-    line["health"] = health;
-    return jsonLine(line);
-}
-
-// Sets one "name=value" of a grading setting. A range takes the value even
-// outside the script's own range (the assignment's range is the
-// solution's); anything else goes through --set's rules. False when no
-// uniform has that name.
-bool applyGradingAssignment(const Plan& plan, UniformValues& values, const std::string& assignment, Diagnostics& diags) {
-    const std::string name = assignment.substr(0, assignment.find('='));
-    bool found = false, plain = true;
-    for (const auto& program : plan.programs)
-        for (const auto& u : program.uniforms)
-            if (u.name == name) found = true, plain = plain && u.form == UniformSetting::Form::Range;
-    if (!found) return false;
-    if (plain) {
-        double v = 0;
-        const std::string text = assignment.substr(name.size() + 1);
-        auto [end, ec] = parseDouble(text.data(), text.data() + text.size(), v);
-        if (ec == std::errc() && end == text.data() + text.size()) {
-            for (size_t p = 0; p < plan.programs.size(); ++p)
-                for (const auto& u : plan.programs[p].uniforms)
-                    if (u.name == name) values.set(int(p), name, {v});
-            return true;
-        }
-    }
-    values.applySet(plan, assignment, diags, "--vary");
-    return true;
-}
-
-// One script on a worker's context, as `glimmer render` draws it; a
-// grading job once per setting.
-BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* context, const std::string& contextError) {
-    // A grading job's diagnostics go into the teacher's report, which must
-    // not change with -q (that is about the terminal). This is a worker
-    // process: the parent's verbosity is untouched.
-    if (!job.outputs.empty() && verbosity() == Verbosity::Quiet) setVerbosity(Verbosity::Normal);
-    BatchResult r;
-    Diagnostics diags;
-    LoadedScript loaded;
-    std::ostringstream printed;
-    if (!context) {
-        r.exitCode = 1;
-        r.diagnostics = "glimmer: error: " + contextError + "\n";
-        r.json = resultJson(job, 1, r.diagnostics, "", 0, 0, 0, "unchecked");
-        return r;
-    }
-    ScriptRequest request;
-    request.script = job.script;
-    request.plan.includeDirs = s.includeDirs;
-    request.plan.includeDirs.insert(request.plan.includeDirs.end(), job.includeDirs.begin(), job.includeDirs.end());
-    request.plan.width = s.width;
-    request.plan.height = s.height;
-    request.plan.sandbox = s.sandbox;
-    if (s.maxMemoryMiB > 0) request.plan.maxMemoryBytes = s.maxMemoryMiB << 20;
-    auto t0 = Clock::now();
-    auto renderer = prepareScript(request, [&](const char* n) { return context->getProcAddress(n); }, diags, loaded);
-    double prepareMs = msSince(t0);
-    printDiagnostics(diags, loaded.sources, printed);
-    if (!renderer) {
-        r.exitCode = 1;
-        r.diagnostics = printed.str();
-        r.ms = prepareMs;
-        r.json = resultJson(job, 1, r.diagnostics, "", prepareMs, 0, 0, "unchecked");
-        return r;
-    }
-    r.prepareMs = prepareMs;
-    if (!job.outputs.empty()) {  // grading: every setting on this one renderer
-        auto t1 = Clock::now();
-        Diagnostics setDiags;
-        std::set<std::string> seen;
-        for (const auto& program : loaded.plan.programs)
-            for (const auto& u : program.uniforms)
-                if (u.form == UniformSetting::Form::Range && !u.values.empty() && seen.insert(u.name).second)
-                    r.sliders.push_back(fmt::format("{} {:g} {:g} {:g}", u.name, u.min, u.values[0], u.max));
-        for (size_t k = 0; k < job.settings.size() && k < job.outputs.size(); ++k) {
-            const auto settingStart = Clock::now();
-            UniformValues values(loaded.plan);
-            for (const auto& a : job.settings[k])
-                if (!applyGradingAssignment(loaded.plan, values, a, setDiags)) {
-                    const std::string name = a.substr(0, a.find('='));
-                    if (std::find(r.missing.begin(), r.missing.end(), name) == r.missing.end()) r.missing.push_back(name);
-                }
-            renderer->render(values, 0);
-            std::string why;
-            if (writePng(job.outputs[k], renderer->readScreen(), why)) r.written.push_back(job.outputs[k]);
-            else printed << "glimmer: error: " << why << "\n";
-            r.settingMs.push_back(msSince(settingStart));
-        }
-        printDiagnostics(setDiags, loaded.sources, printed);
-        r.exitCode = r.written.size() == job.outputs.size() ? 0 : 1;
-        r.diagnostics = printed.str();
-        r.ms = prepareMs + msSince(t1);
-        r.json = resultJson(job, r.exitCode, r.diagnostics, r.written.empty() ? "" : r.written[0], prepareMs,
-                            msSince(t1), 0, "unchecked");
-        return r;
-    }
-    auto t1 = Clock::now();
-    renderer->render(UniformValues(loaded.plan), 0);
-    Image screen = renderer->readScreen();
-    double renderMs = msSince(t1);
-    std::string health = "unchecked";
-    if (s.strict) {
-        bool bad = false;
-        for (const auto& h : measureHealth(*renderer, loaded.plan)) bad |= h.bad();
-        health = bad ? "bad" : "ok";
-        if (bad) printed << "glimmer: error: --strict: a target holds NaN, Inf, negative or out-of-range values\n";
-    }
-    auto t2 = Clock::now();
-    std::string why;
-    bool wrote = health != "bad" && writePng(job.output, screen, why);
-    if (health != "bad" && !wrote) printed << "glimmer: error: " << why << "\n";
-    r.exitCode = wrote ? 0 : 1;
-    r.diagnostics = printed.str();
-    if (wrote) r.written.push_back(job.output);
-    r.ms = prepareMs + renderMs + msSince(t2);
-    r.json = resultJson(job, r.exitCode, r.diagnostics, wrote ? job.output : "", prepareMs, renderMs, msSince(t2), health);
-    return r;
-}
-
-// A result as bytes for the pipe back to the parent: the four texts, each
-// length-prefixed (lists joined by newlines), then the milliseconds.
-std::string encodeResult(const BatchResult& r) {
-    auto join = [](const std::vector<std::string>& v) {
-        std::string out;
-        for (const auto& x : v) out += (out.empty() ? "" : "\n") + x;
-        return out;
-    };
-    std::string out;
-    std::string times;
-    for (double ms : r.settingMs) times += (times.empty() ? "" : "\n") + formatDouble(ms);
-    times += (times.empty() ? "" : "\n") + formatDouble(r.prepareMs);  // the last line: the prepare's
-    for (const std::string& text : {r.json, r.diagnostics, join(r.written), join(r.missing), join(r.sliders), times}) {
-        std::uint32_t n = std::uint32_t(text.size());
-        out.append(reinterpret_cast<const char*>(&n), sizeof n);
-        out += text;
-    }
-    out.append(reinterpret_cast<const char*>(&r.ms), sizeof r.ms);
-    return out;
-}
-
-bool decodeResult(const std::string& bytes, BatchResult& r) {
-    size_t at = 0;
-    auto text = [&](std::string& t) {
-        std::uint32_t n = 0;
-        if (at + sizeof n > bytes.size()) return false;
-        std::memcpy(&n, bytes.data() + at, sizeof n);
-        at += sizeof n;
-        if (n > bytes.size() - at) return false;
-        t = bytes.substr(at, n);
-        at += n;
-        return true;
-    };
-    auto split = [](const std::string& t) {
-        std::vector<std::string> out;
-        std::istringstream in(t);
-        for (std::string l; std::getline(in, l);) out.push_back(l);
-        return out;
-    };
-    std::string written, missing, sliders, times;
-    if (!text(r.json) || !text(r.diagnostics) || !text(written) || !text(missing) || !text(sliders) || !text(times) ||
-        at + sizeof r.ms != bytes.size())
-        return false;
-    std::memcpy(&r.ms, bytes.data() + at, sizeof r.ms);
-    r.written = split(written);
-    r.missing = split(missing);
-    r.sliders = split(sliders);
-    r.settingMs.clear();
-    for (const std::string& line : split(times)) {  // locale-independent both ways (util/numbers.h)
-        double ms = 0;
-        if (parseDouble(line.data(), line.data() + line.size(), ms).ec != std::errc{}) return false;
-        r.settingMs.push_back(ms);
-    }
-    if (r.settingMs.empty()) return false;
-    r.prepareMs = r.settingMs.back();
-    r.settingMs.pop_back();
-    return true;
-}
-
-bool writeAll(int fd, const void* data, size_t n) {
-    const char* p = static_cast<const char*>(data);
-    while (n > 0) {
-        ssize_t w = ::write(fd, p, n);
-        if (w <= 0) return false;
-        p += w;
-        n -= size_t(w);
-    }
-    return true;
-}
-
-bool readAll(int fd, void* data, size_t n) {
-    char* p = static_cast<char*>(data);
-    while (n > 0) {
-        ssize_t got = ::read(fd, p, n);
-        if (got <= 0) return false;
-        p += got;
-        n -= size_t(got);
-    }
-    return true;
-}
-
-// A worker: reads job indices, renders, writes back {index, exit, length, json}.
-[[noreturn]] void workerMain(int jobsFd, int resultsFd, const std::vector<BatchJob>& jobs, const BatchSettings& s) {
-    std::unique_ptr<GlContext> context;
-    std::string contextError;
-    bool tried = false;
-    std::uint32_t index = 0;
-    while (readAll(jobsFd, &index, sizeof index)) {
-        if (!tried) {  // made on the first job, kept for every later one
-            tried = true;
-            BackendChoice choice;
-            if (parseBackend(s.backend, choice)) context = createContext(choice, contextError);
-            else contextError = "unknown backend '" + s.backend + "'";
-        }
-        BatchResult r;
-        try {
-            r = renderOne(jobs[index], s, context.get(), contextError);
-        } catch (const std::exception& e) {
-            r.exitCode = 1;
-            r.diagnostics = std::string("glimmer: error: ") + e.what() + "\n";
-            r.json = resultJson(jobs[index], 1, r.diagnostics, "", 0, 0, 0, "unchecked");
-        }
-        std::int32_t code = r.exitCode;
-        const std::string payload = encodeResult(r);
-        std::uint32_t length = std::uint32_t(payload.size());
-        if (!writeAll(resultsFd, &index, sizeof index) || !writeAll(resultsFd, &code, sizeof code) ||
-            !writeAll(resultsFd, &length, sizeof length) || !writeAll(resultsFd, payload.data(), payload.size()))
-            break;
-    }
-    std::fflush(nullptr);
-    ::_exit(0);
-}
-
 struct Worker {
     pid_t pid = -1;
     int toWorker = -1, fromWorker = -1;
-    long job = -1;  // the job it is rendering; -1: idle
-    Clock::time_point started;
+    long job = -1;       // the job it is drawing; -1: idle
+    int jobsTaken = 0;   // a fresh worker has taken none
+    bool begun = false;  // the worker said it began the job (its context is made)
+    int phase = kPhasePreparing;
+    bool tainted = false;  // another worker was killed while this job was in flight
+    bool shared = false;   // another worker drew while this job was in flight
+    Clock::time_point since;  // spawned, or began the job
 };
 
 // `others`: the workers already running. A child inherits their pipe ends
@@ -318,28 +69,298 @@ Worker spawn(const std::vector<BatchJob>& jobs, const BatchSettings& s, const st
     w.pid = pid;
     w.toWorker = down[1];
     w.fromWorker = up[0];
+    w.since = Clock::now();
     return w;
 }
 
-void retire(Worker& w, bool kill) {
+// Lets a worker go: killed, or told there is no more work (its job pipe
+// closed). Not waited for here: a process killed inside the GPU driver can
+// take many seconds to end (NVIDIA: in the kernel, holding a lock the other
+// workers need), and every other worker's clock runs meanwhile. Reaped by
+// reapSome, and by reapAll at the end.
+void retire(Worker& w, bool kill, std::vector<pid_t>& ending) {
     if (w.pid > 0) {
         if (kill) ::kill(w.pid, SIGKILL);
         ::close(w.toWorker);
         ::close(w.fromWorker);
-        int status = 0;
-        ::waitpid(w.pid, &status, 0);
+        ending.push_back(w.pid);
     }
     w = Worker{};
 }
 
+void reapSome(std::vector<pid_t>& ending) {
+    ending.erase(std::remove_if(ending.begin(), ending.end(),
+                                [](pid_t p) {
+                                    int status = 0;
+                                    return ::waitpid(p, &status, WNOHANG) != 0;
+                                }),
+                 ending.end());
+}
+
+void reapAll(std::vector<pid_t>& ending) {
+    for (pid_t p : ending) {
+        int status = 0;
+        ::waitpid(p, &status, 0);
+    }
+    ending.clear();
+}
+
+// What a stopped job was doing, for its message.
+std::string stoppedWhile(const BatchJob& job, int phase) {
+    if (phase == kPhasePreparing) return "while loading and compiling the script";
+    if (!job.outputs.empty()) return fmt::format("while drawing setting {} of {}", phase + 1, job.outputs.size());
+    return "while drawing";
+}
+
+// The scheduler: which job goes to which worker, and what a worker's
+// answer, crash or time-out means (batch.h's contract).
+class Scheduler {
+public:
+    Scheduler(const std::vector<BatchJob>& jobs, const BatchSettings& s,
+              const std::function<void(size_t, size_t)>& progress,
+              const std::function<void(size_t, const BatchResult&)>& onResult)
+        : jobs_(jobs), s_(s), progress_(progress), onResult_(onResult), results_(jobs.size()), state_(jobs.size()),
+          workers_(size_t(std::max(1, std::min<int>(s.jobs, int(jobs.size()))))) {
+        for (size_t k = 0; k < jobs.size(); ++k) queue_.push_back(k);
+    }
+
+    std::vector<BatchResult> run() {
+        ::signal(SIGPIPE, SIG_IGN);  // a worker that died mid-job must not take the parent with it
+        while (finished_ < jobs_.size()) {
+            assign();
+            std::vector<pollfd> fds;
+            for (auto& w : workers_) fds.push_back({w.pid > 0 ? w.fromWorker : -1, POLLIN, 0});
+            ::poll(fds.data(), fds.size(), 50);
+            for (size_t k = 0; k < workers_.size(); ++k) {
+                Worker& w = workers_[k];
+                if (w.pid <= 0) continue;
+                if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) hear(w);
+                else checkTime(w);
+            }
+            reapSome(ending_);
+        }
+        for (auto& w : workers_) retire(w, false, ending_);
+        reapAll(ending_);
+        return std::move(results_);
+    }
+
+private:
+    struct JobState {
+        bool retried = false;    // drawn again alone once already
+        bool alone = false;      // must be drawn with no other worker drawing, in a fresh worker
+    };
+
+    bool loneJobRunning() const {
+        for (const Worker& w : workers_)
+            if (w.job >= 0 && state_[size_t(w.job)].alone) return true;
+        return false;
+    }
+    bool anyBusy() const {
+        for (const Worker& w : workers_)
+            if (w.job >= 0) return true;
+        return false;
+    }
+
+    void give(Worker& w, size_t job) {
+        if (w.pid <= 0) w = spawn(jobs_, s_, workers_);
+        if (w.pid <= 0) return;
+        std::uint32_t index = std::uint32_t(job);
+        if (!writeAll(w.toWorker, &index, sizeof index)) {
+            retire(w, true, ending_);
+            return;
+        }
+        queue_.pop_front();
+        w.shared = false;
+        for (Worker& o : workers_)
+            if (&o != &w && o.job >= 0) o.shared = w.shared = true;
+        w.job = long(job);
+        w.begun = false;
+        w.phase = kPhasePreparing;
+        w.tainted = false;
+        ++w.jobsTaken;
+        if (w.jobsTaken > 1) w.since = Clock::now();  // a fresh worker's clock runs from its spawn until it begins
+    }
+
+    void assign() {
+        while (!queue_.empty() && !loneJobRunning()) {
+            const size_t job = queue_.front();
+            if (state_[job].alone) {
+                if (anyBusy()) return;  // wait for the others to finish
+                Worker& w = workers_[0];
+                if (w.pid > 0 && w.jobsTaken > 0) retire(w, false, ending_);
+                give(w, job);
+                return;
+            }
+            Worker* idle = nullptr;
+            for (Worker& w : workers_)
+                if (w.job < 0 && !idle) idle = &w;
+            if (!idle) return;
+            const size_t before = queue_.size();
+            give(*idle, job);
+            if (queue_.size() == before) return;  // no worker could be started: try again next round
+        }
+    }
+
+    void finish(size_t job, BatchResult r) {
+        r.drawnAlone = state_[job].retried;
+        results_[job] = std::move(r);
+        ++finished_;
+        if (onResult_) onResult_(job, results_[job]);
+        if (progress_) progress_(finished_, jobs_.size());
+    }
+
+    // A job the machine failed: drawn again alone, once; then final. Once a
+    // lone worker could not make a context either, no later job waits for
+    // a second try of that (the backend is missing, not busy).
+    void machineFailed(size_t job, BatchResult r) {
+        const bool noContext = r.failure.rfind(kNoContext, 0) == 0;
+        if (state_[job].retried && noContext) contextMissing_ = true;
+        if (!state_[job].retried && !(noContext && contextMissing_)) {
+            state_[job].retried = true;
+            state_[job].alone = true;
+            queue_.push_front(job);
+            return;
+        }
+        if (state_[job].retried) {
+            r.diagnostics += "glimmer: note: the same when drawn again, alone on the machine in a fresh worker\n";
+            Json line = Json::parse(r.json, nullptr, false);
+            if (line.is_object()) {
+                line["diagnostics"] = r.diagnostics;
+                r.json = jsonLine(line);
+            }
+        }
+        finish(job, std::move(r));
+    }
+
+    // Every other job in flight when a worker is killed may have lost its
+    // work or its time to it: drawn again.
+    void taintOthers(const Worker& killed) {
+        for (Worker& w : workers_)
+            if (&w != &killed && w.job >= 0) w.tainted = true;
+    }
+
+    void requeueTainted(Worker& w) {
+        queue_.push_front(size_t(w.job));
+        retire(w, false, ending_);
+    }
+
+    void hear(Worker& w) {
+        WorkerMessage m;
+        std::string payload;
+        bool ok = readAll(w.fromWorker, &m, sizeof m) && m.length < (64u << 20) && long(m.job) == w.job;
+        if (ok) {
+            payload.resize(m.length);
+            ok = readAll(w.fromWorker, payload.data(), m.length);
+        }
+        BatchResult got;
+        if (ok && m.kind == WorkerMessage::Phase) {
+            if (!w.begun) w.since = Clock::now();  // the job's own time starts now
+            w.begun = true;
+            w.phase = m.a;
+            return;
+        }
+        ok = ok && m.kind == WorkerMessage::Result && decodeResult(payload, got);
+        const long job = w.job;
+        if (!ok) {  // a crash, or garbage on the pipe
+            const double ms = w.begun ? msSince(w.since) : 0;
+            const bool tainted = w.tainted;
+            const int phase = w.phase;
+            retire(w, true, ending_);
+            taintOthers(w);
+            if (job < 0) return;
+            if (tainted) {
+                queue_.push_front(size_t(job));
+                return;
+            }
+            BatchResult r = failed(size_t(job), jobs_[size_t(job)].script + ": error: the renderer crashed " +
+                                                    stoppedWhile(jobs_[size_t(job)], phase) + "\n", ms);
+            r.stoppedAt = phase;
+            machineFailed(size_t(job), std::move(r));
+            return;
+        }
+        got.exitCode = m.a;
+        if (w.tainted) {
+            requeueTainted(w);
+            return;
+        }
+        w.job = -1;
+        if (!got.failure.empty()) {  // the worker said its context failed: it is ending
+            retire(w, false, ending_);
+            machineFailed(size_t(job), std::move(got));
+            return;
+        }
+        if (s_.recheck && !state_[size_t(job)].retried && s_.recheck(size_t(job), got)) {
+            state_[size_t(job)].retried = true;
+            state_[size_t(job)].alone = true;
+            queue_.push_front(size_t(job));
+            return;
+        }
+        finish(size_t(job), std::move(got));
+    }
+
+    void checkTime(Worker& w) {
+        if (w.job < 0) return;
+        const BatchJob& job = jobs_[size_t(w.job)];
+        double limit = s_.contextSeconds;
+        std::string said = "making the GL context";
+        if (w.begun) {
+            // The limit now: the whole job's, or (grading) that of the setting it is drawing.
+            limit = s_.timeoutSeconds;
+            if (!s_.settingDeadlines.empty() && s_.settingDeadlines.size() == job.outputs.size())
+                limit = s_.settingDeadlines[size_t(std::clamp<int>(w.phase, 0, int(s_.settingDeadlines.size()) - 1))];
+        }
+        const double ms = msSince(w.since);
+        if (!(limit > 0) || ms <= limit * 1000) return;
+        const size_t index = size_t(w.job);
+        const bool begun = w.begun, tainted = w.tainted, shared = w.shared;
+        const int phase = w.phase;
+        retire(w, true, ending_);
+        taintOthers(w);
+        BatchResult r;
+        if (!begun)
+            r = failed(index, fmt::format("{}: error: the worker could not make its GL context in {:g} s\n", job.script,
+                                          limit), 0);
+        else
+            r = failed(index,
+                       fmt::format("{}: error: stopped after {:g} s ({}) {}\n", job.script, limit,
+                                   s_.timeoutSaid.empty() ? fmt::format("--timeout {:g}", s_.timeoutSeconds) : s_.timeoutSaid,
+                                   stoppedWhile(job, phase)),
+                       ms);
+        r.stoppedAt = begun ? phase : BatchResult::kNotStopped;
+        if (!begun) r.failure = std::string(kNoContext) + "not made in time";
+        // A job that had the machine to itself the whole time has had its
+        // lone drawing: its time-out is final (a second one would cost the
+        // limit again, and on NVIDIA a second kill of a shader that never
+        // ends holds every other process in the driver for seconds). A
+        // tainted job is retried like any other: every kill costs a retry.
+        if (begun && !shared && !tainted) finish(index, std::move(r));
+        else machineFailed(index, std::move(r));
+    }
+
+    BatchResult failed(size_t job, const std::string& why, double ms) {
+        BatchResult r;
+        r.exitCode = 1;
+        r.json = failedResultJson(jobs_[job], why);
+        r.diagnostics = why;
+        r.ms = ms;
+        return r;
+    }
+
+    const std::vector<BatchJob>& jobs_;
+    const BatchSettings& s_;
+    const std::function<void(size_t, size_t)>& progress_;
+    const std::function<void(size_t, const BatchResult&)>& onResult_;
+    std::vector<BatchResult> results_;
+    std::vector<JobState> state_;
+    std::vector<Worker> workers_;
+    std::deque<size_t> queue_;
+    std::vector<pid_t> ending_;
+    size_t finished_ = 0;
+    bool contextMissing_ = false;
+};
+
 }  // namespace
 
-size_t settingsDrawn(const BatchJob& job) {
-    size_t drawn = 0;
-    std::error_code ec;
-    while (drawn < job.outputs.size() && std::filesystem::exists(job.outputs[drawn], ec)) ++drawn;
-    return drawn;
-}
 
 bool inShard(size_t index, int shard, int shards) {
     return shards >= 1 && shard >= 1 && shard <= shards && int(index % size_t(shards)) == shard - 1;
@@ -397,100 +418,7 @@ std::vector<std::string> batchOutputNames(const std::vector<std::string>& script
 std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const BatchSettings& s,
                                   const std::function<void(size_t, size_t)>& progress,
                                   const std::function<void(size_t, const BatchResult&)>& onResult) {
-    std::vector<BatchResult> results(jobs.size());
-    std::vector<bool> done(jobs.size(), false);
-    size_t next = 0, finished = 0;
-    ::signal(SIGPIPE, SIG_IGN);  // a worker that died mid-job must not take the parent with it
-    std::vector<Worker> workers(size_t(std::max(1, std::min<int>(s.jobs, int(jobs.size())))));
-    auto ranMs = [](const Worker& w) { return std::chrono::duration<double, std::milli>(Clock::now() - w.started).count(); };
-    // `ms`: how long the job ran before it was stopped (a time-out is not
-    // "0.00 s" in a report: issue 29).
-    auto fail = [&](long job, const std::string& why, double ms = 0) {
-        const BatchJob& j = jobs[size_t(job)];
-        BatchResult& r = results[size_t(job)];
-        r.exitCode = 1;
-        r.json = resultJson(j, 1, why, "", 0, 0, 0, "unchecked");
-        r.diagnostics = why;
-        r.ms = ms;
-        done[size_t(job)] = true;
-        ++finished;
-        if (onResult) onResult(size_t(job), r);
-        if (progress) progress(finished, jobs.size());
-    };
-    auto assign = [&](Worker& w) {
-        if (next >= jobs.size()) return;
-        if (w.pid <= 0) w = spawn(jobs, s, workers);
-        if (w.pid <= 0) return;
-        std::uint32_t index = std::uint32_t(next);
-        if (!writeAll(w.toWorker, &index, sizeof index)) {
-            retire(w, true);
-            return;
-        }
-        w.job = long(next++);
-        w.started = Clock::now();
-    };
-    for (auto& w : workers) assign(w);
-    while (finished < jobs.size()) {
-        std::vector<pollfd> fds;
-        for (auto& w : workers) fds.push_back({w.pid > 0 ? w.fromWorker : -1, POLLIN, 0});
-        ::poll(fds.data(), fds.size(), 50);
-        for (size_t k = 0; k < workers.size(); ++k) {
-            Worker& w = workers[k];
-            if (w.pid <= 0) {
-                if (next < jobs.size()) assign(w);
-                continue;
-            }
-            if (fds[k].revents & (POLLIN | POLLHUP | POLLERR)) {
-                std::uint32_t index = 0, length = 0;
-                std::int32_t code = 0;
-                std::string payload;
-                BatchResult got;
-                bool ok = readAll(w.fromWorker, &index, sizeof index) && readAll(w.fromWorker, &code, sizeof code) &&
-                          readAll(w.fromWorker, &length, sizeof length) && length < (64u << 20);
-                if (ok) {
-                    payload.resize(length);
-                    ok = readAll(w.fromWorker, payload.data(), length) && long(index) == w.job &&
-                         decodeResult(payload, got);
-                }
-                if (ok) {
-                    got.exitCode = code;
-                    results[index] = std::move(got);
-                    done[index] = true;
-                    ++finished;
-                    if (onResult) onResult(index, results[index]);
-                    if (progress) progress(finished, jobs.size());
-                    w.job = -1;
-                    if (next < jobs.size()) assign(w);
-                    else retire(w, false);
-                } else {
-                    long job = w.job;
-                    const double ms = ranMs(w);
-                    retire(w, true);
-                    if (job >= 0 && !done[size_t(job)])
-                        fail(job, jobs[size_t(job)].script + ": error: the renderer crashed while drawing this script\n",
-                             ms);
-                    if (next < jobs.size()) assign(w);
-                }
-                continue;
-            }
-            // The limit now: the whole job's, or (grading) that of the setting it is drawing.
-            double limit = s.timeoutSeconds;
-            if (w.job >= 0 && !s.settingDeadlines.empty() &&
-                s.settingDeadlines.size() == jobs[size_t(w.job)].outputs.size()) {
-                limit = s.settingDeadlines[std::min(settingsDrawn(jobs[size_t(w.job)]), s.settingDeadlines.size() - 1)];
-            }
-            if (const double ms = ranMs(w); w.job >= 0 && limit > 0 && ms > limit * 1000) {
-                long job = w.job;
-                retire(w, true);
-                fail(job, fmt::format("{}: error: stopped after {:g} s ({})\n", jobs[size_t(job)].script, limit,
-                                      s.timeoutSaid.empty() ? fmt::format("--timeout {:g}", s.timeoutSeconds)
-                                                            : s.timeoutSaid), ms);
-                if (next < jobs.size()) assign(w);
-            }
-        }
-    }
-    for (auto& w : workers) retire(w, false);
-    return results;
+    return Scheduler(jobs, s, progress, onResult).run();
 }
 
 }  // namespace glimmer

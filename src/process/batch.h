@@ -8,6 +8,19 @@
 //     the time limit is a failed result and the worker is replaced; no
 //     other script is lost.
 //   - The parent makes no GL context; workers are forked before any.
+//   - A result is one the machine drew cleanly, or the script's own failure
+//     seen twice. Workers share one GPU, and on a GPU one process can stall
+//     or reset the others' work (a shader that never ends, a worker killed
+//     mid-draw: on NVIDIA the others then read back zeros or wait for ever).
+//     So: a job stopped by the time limit, a crashed worker, or a context
+//     that reports a reset, a lost context or no memory (BatchResult::
+//     failure) is drawn once more, alone (no other worker drawing) in a
+//     fresh worker, and only that second outcome counts; every job that was
+//     in flight while a worker was killed is drawn again (not counted as a
+//     retry), and its worker is replaced. A worker that failed is never
+//     reused. `BatchSettings::recheck` asks for the same second, lone
+//     drawing of a result that looks suspicious to the caller (grading: a
+//     picture that is a single colour).
 //   - shardOf is a pure function of the position in the list, so N machines
 //     given the same list and I = 1..N render each script exactly once.
 #pragma once
@@ -35,6 +48,8 @@ struct BatchJob {
     std::vector<std::string> includeDirs;
 };
 
+struct BatchResult;
+
 struct BatchSettings {
     std::string backend = "auto";
     std::vector<std::string> includeDirs;
@@ -52,6 +67,12 @@ struct BatchSettings {
     std::vector<double> settingDeadlines;
     bool strict = false;           // a target with NaN, Inf, negatives or out-of-range values fails the script
     int jobs = 2;                  // worker processes
+    // Called in the parent with a finished job's result: true to have it
+    // drawn once more, alone in a fresh worker, whose result is then final.
+    std::function<bool(std::size_t job, const BatchResult&)> recheck;
+    // How long a fresh worker may take to make its GL context before it is
+    // replaced (not counted in any script's time).
+    double contextSeconds = 60;
 };
 
 struct BatchResult {
@@ -68,6 +89,15 @@ struct BatchResult {
     std::vector<double> settingMs;
     double prepareMs = 0;
     double ms = 0;                      // prepare, render and write together
+    // Why the machine, not the script, failed (a GPU reset, a lost context,
+    // no GPU memory, no context): "" when it did not. Set by the worker;
+    // runBatch retries such a job, and a final result keeps it.
+    std::string failure;
+    // Where a stopped job was: kNotStopped, kStoppedPreparing (loading and
+    // compiling), or the setting being drawn (0 for a plain script).
+    static constexpr int kNotStopped = -2, kStoppedPreparing = -1;
+    int stoppedAt = kNotStopped;
+    bool drawnAlone = false;            // this result is the second, lone drawing
 };
 
 // Renders every job; `progress(done, total)` after each, and
@@ -77,10 +107,6 @@ std::vector<BatchResult> runBatch(const std::vector<BatchJob>& jobs, const Batch
                                   const std::function<void(size_t, size_t)>& progress,
                                   const std::function<void(size_t, const BatchResult&)>& onResult = {});
 
-// How many of a grading job's settings are drawn: its outputs are written
-// in order, so the count of those on disk from the first (a stopped job's
-// tells where it stopped; the per-setting limits which one it is drawing).
-size_t settingsDrawn(const BatchJob& job);
 
 // Whether position `index` of the list belongs to shard `shard` (1-based) of `shards`.
 bool inShard(size_t index, int shard, int shards);

@@ -168,9 +168,9 @@ TEST(CliGrade, EachKindOfSubmissionGetsItsVerdict) {
     EXPECT_EQ(verdict("broken"), "0,error,,");
     EXPECT_NE(rest("broken").find("rings.frag:7:12: error: syntax error"), std::string::npos) << rest("broken");
     EXPECT_EQ(verdict("slow"), "0,error,,");
-    // Where it stopped: the first setting whose picture it never wrote (issue 29).
+    // Where it stopped: the setting the worker said it was drawing (issue 29, 36).
     EXPECT_EQ(rest("slow"), "timed out at setting defaults (1 of 5)," + (cls / "slow" / "rings.glib").string() +
-                                ": error: stopped after 3 s (--timeout 3)");
+                                ": error: stopped after 3 s (--timeout 3) while drawing setting 1 of 5");
     {  // the time it ran before it was stopped, not 0.00 s (issue 29)
         std::istringstream csv(readAll(out / "grades.csv"));
         std::string line;

@@ -16,7 +16,8 @@ namespace {
 
 const bool kCleaned = [] {
     for (const char* name :
-         {"GLIMMER_TTY", "GLIMMER_FONT", "GLIMMER_SLICE_MS", "GLIMMER_DATA_DIR", "GLIMMER_DRIVER_SHADER_CACHE"})
+         {"GLIMMER_TTY", "GLIMMER_FONT", "GLIMMER_SLICE_MS", "GLIMMER_DATA_DIR", "GLIMMER_DRIVER_SHADER_CACHE",
+          "GLIMMER_TEST_FAULT"})
         ::unsetenv(name);
     return true;
 }();

@@ -1,0 +1,137 @@
+// Issue 36: a picture the machine lost is never a result. On a GPU shared
+// by several workers one process can reset the others' work (they then
+// read back zeros, with or without a reset reported); batch draws such a
+// job again, alone in a fresh worker, and only that second drawing counts.
+// llvmpipe never loses a context, so the loss is put in by the worker's test
+// hook GLIMMER_TEST_FAULT (process/batch_worker.cpp).
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "run_glimmer.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using glimmer_cli::countOf;
+using glimmer_cli::runGlimmer;
+using glimmer_cli::TempDir;
+
+std::string readAll(const fs::path& path) {
+    std::ifstream f(path, std::ios::binary);
+    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
+}
+
+// Sets GLIMMER_TEST_FAULT for the glimmer processes this test starts.
+struct Fault {
+    explicit Fault(const std::string& spec) { ::setenv("GLIMMER_TEST_FAULT", spec.c_str(), 1); }
+    ~Fault() { ::unsetenv("GLIMMER_TEST_FAULT"); }
+};
+
+std::string writeSolid(const TempDir& dir, const std::string& name, int k) {
+    std::ofstream(dir.file(name)) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nColor " << (k % 3 == 0) << " "
+                                  << (k % 3 == 1) << " " << (k % 3 == 2) << "\nQuadXY 0 1\n";
+    return dir.file(name);
+}
+
+// The PNG batch wrote for the script named `stem` (batch names it after the
+// whole path), or "" when there is none.
+std::string pngOf(const fs::path& out, const std::string& stem) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(out, ec)) {
+        const std::string name = e.path().filename().string();
+        if (name.size() > stem.size() + 4 && name.compare(name.size() - stem.size() - 4, std::string::npos, stem + ".png") == 0)
+            return e.path().string();
+    }
+    return "";
+}
+
+std::vector<nlohmann::json> report(const fs::path& path) {
+    std::vector<nlohmann::json> out;
+    std::istringstream in(readAll(path));
+    for (std::string l; std::getline(in, l);) out.push_back(nlohmann::json::parse(l, nullptr, false));
+    return out;
+}
+
+TEST(CliBatchRetry, APictureLostToAResetIsDrawnAgainAloneAndKept) {
+    TempDir dir;
+    std::vector<std::string> scripts;
+    for (int k = 0; k < 5; ++k) scripts.push_back(writeSolid(dir, k == 2 ? "lost.glib" : "s" + std::to_string(k) + ".glib", k));
+    const fs::path marker = dir.path() / "fault-happened";
+    std::vector<std::string> args = {"batch"};
+    args.insert(args.end(), scripts.begin(), scripts.end());
+    for (const std::string& a : std::vector<std::string>{"-o", dir.file("out"), "--report", dir.file("r.jsonl"), "--size",
+                                                         "32x32", "--backend", "osmesa", "--jobs", "2"})
+        args.push_back(a);
+    Fault fault("reset:lost.glib:" + marker.string());
+    auto r = runGlimmer(args);
+    EXPECT_TRUE(fs::exists(marker)) << "the fault never happened";
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    auto lines = report(dir.path() / "r.jsonl");
+    ASSERT_EQ(lines.size(), 5u);
+    EXPECT_EQ(lines[2].value("exit", -1), 0) << lines[2].dump();
+    EXPECT_EQ(lines[2].value("diagnostics", "?"), "") << lines[2].dump();
+    // The kept picture is the script's own: what `glimmer render` draws.
+    auto ref = runGlimmer({"-q", "render", scripts[2], "-o", dir.file("ref.png"), "--size", "32x32", "--backend", "osmesa"});
+    ASSERT_EQ(ref.exitCode, 0) << ref.err;
+    ASSERT_NE(pngOf(dir.path() / "out", "_lost"), "");
+    EXPECT_EQ(readAll(pngOf(dir.path() / "out", "_lost")), readAll(dir.path() / "ref.png"));
+}
+
+TEST(CliBatchRetry, AResetOnEveryDrawingIsAnErrorThatSaysSoAndWritesNoPicture) {
+    TempDir dir;
+    const std::string good = writeSolid(dir, "good.glib", 0), lost = writeSolid(dir, "lost.glib", 1);
+    Fault fault("reset:lost.glib:");
+    auto r = runGlimmer({"batch", good, lost, "-o", dir.file("out"), "--report", dir.file("r.jsonl"), "--size", "32x32",
+                         "--backend", "osmesa", "--jobs", "2"});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    auto lines = report(dir.path() / "r.jsonl");
+    ASSERT_EQ(lines.size(), 2u);
+    EXPECT_EQ(lines[0].value("exit", -1), 0) << lines[0].dump();
+    EXPECT_EQ(lines[1].value("exit", -1), 1) << lines[1].dump();
+    EXPECT_EQ(lines[1].value("diagnostics", ""),
+              "glimmer: error: the GPU was reset by another process while this script drew (GLIMMER_TEST_FAULT)\n"
+              "glimmer: note: the same when drawn again, alone on the machine in a fresh worker\n");
+    EXPECT_NE(pngOf(dir.path() / "out", "_good"), "");
+    EXPECT_EQ(pngOf(dir.path() / "out", "_lost"), "");
+}
+
+// Grading: a correct submission whose first drawing read back as zeros (an
+// NVIDIA worker after another's kill, no error said) is graded on its second,
+// lone drawing, not "wrong, the picture is a single colour".
+TEST(CliBatchRetry, ASingleColourIsAVerdictOnlyWhenAFreshWorkerDrawsItAgain) {
+    TempDir dir;
+    const fs::path solution = fs::path(GLIMMER_TEST_DATA) / "grading" / "solution";
+    const fs::path cls = dir.path() / "class";
+    for (const char* who : {"ana", "ben", "cleo"}) {
+        fs::create_directories(cls / who);
+        for (const char* f : {"rings.glib", "rings.frag", "st.vert"}) fs::copy_file(solution / f, cls / who / f);
+    }
+    const fs::path marker = dir.path() / "fault-happened";
+    auto grade = [&](const std::string& spec, const std::string& out) {
+        Fault fault(spec);
+        return runGlimmer({"batch", cls.string(), "--reference", (solution / "rings.glib").string(), "-o",
+                           (dir.path() / out).string(), "--size", "64x64", "--backend", "osmesa", "--jobs", "2"},
+                          120);
+    };
+    auto r = grade("zeros:/ben/:" + marker.string(), "once");
+    EXPECT_TRUE(fs::exists(marker)) << "the fault never happened";
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string once = readAll(dir.path() / "once" / "grades.csv");
+    EXPECT_NE(once.find("\nben,100,pass,"), std::string::npos) << once;
+    // Zeros on every drawing: then it is the verdict, said as before.
+    r = grade("zeros:/ben/:", "always");
+    const std::string always = readAll(dir.path() / "always" / "grades.csv");
+    EXPECT_NE(always.find("\nben,0,wrong,"), std::string::npos) << always;
+    EXPECT_NE(always.find("the picture is a single colour"), std::string::npos) << always;
+    EXPECT_NE(always.find("\nana,100,pass,"), std::string::npos) << always;
+}
+
+}  // namespace
