@@ -21,13 +21,30 @@ std::string dB(double v) { return std::isinf(v) ? "identical" : fmt::format("{:.
 // A cell a spreadsheet would run as a formula starts with '=', '+', '-' or
 // '@', or with a tab or a carriage return before one (OWASP's CSV injection
 // list; issue 29): it gets a "'" first, which makes it text.
+// Spreadsheets also trim leading spaces and read the full-width forms
+// (U+FF1D = and its kin) as the ASCII ones (issue 37).
 bool startsLikeAFormula(const std::string& text) {
     if (text.empty()) return false;
     if (text[0] == '\t' || text[0] == '\r') return true;
-    return (text[0] == '=' || text[0] == '+' || text[0] == '-' || text[0] == '@');
+    const size_t at = text.find_first_not_of(' ');
+    if (at == std::string::npos) return false;
+    const char c = text[at];
+    if (c == '=' || c == '+' || c == '-' || c == '@') return true;
+    for (const char* wide : {"\xef\xbc\x9d", "\xef\xbc\x8b", "\xef\xbc\x8d", "\xef\xbc\xa0"})  // = + - @
+        if (text.compare(at, 3, wide) == 0) return true;
+    return false;
 }
 
 std::string csvCell(std::string text) {
+    // Control bytes from a folder name or a comment (ESC, NUL) as \xNN text:
+    // the CSV is read in terminals and by scripts too.
+    std::string clean;
+    for (char ch : text) {
+        const unsigned char c = static_cast<unsigned char>(ch);
+        if ((c < 0x20 && c != '\n' && c != '\r' && c != '\t') || c == 0x7f) clean += fmt::format("\\x{:02x}", c);
+        else clean += ch;
+    }
+    text = std::move(clean);
     if (startsLikeAFormula(text)) text = "'" + text;
     if (text.find_first_of(",\"\n\r") == std::string::npos) return text;
     std::string out = "\"";
@@ -113,6 +130,10 @@ std::string reportHtml(const ReportHeader& h, const std::vector<GradeRow>& rows,
     std::string out;
     out += "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>Grades: " + htmlEscape(h.solution) +
            "</title>\n<style>\n"
+           // A name is isolated from the text around it: a right-to-left
+           // override (U+202E) in a folder name no longer turns the row
+           // around (issue 37).
+           ".who b,.glance a,.path,h1{unicode-bidi:isolate}\n"
            "body{font:14px/1.35 system-ui,sans-serif;margin:16px;color:#222}\n"
            "h1{font-size:20px;margin:0 0 4px}\n.how{color:#555;margin:0 0 10px}\n"
            ".counts span{display:inline-block;padding:2px 8px;margin-right:6px;border-radius:3px}\n"
@@ -162,7 +183,7 @@ std::string feedbackHtml(const GradeRow& r, const std::string& solutionName, con
     };
     const std::string label = r.verdict == "error" && !r.notes.empty() ? "error: " + r.notes : r.verdict;
     std::string out = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>Feedback: " + htmlEscape(r.student) +
-                      "</title>\n<style>\nbody{font:15px/1.4 system-ui,sans-serif;margin:16px;color:#222;max-width:1100px}\n"
+                      "</title>\n<style>\nh1{unicode-bidi:isolate}\nbody{font:15px/1.4 system-ui,sans-serif;margin:16px;color:#222;max-width:1100px}\n"
                       "h1{font-size:20px;margin:0 0 6px}\nfigure{display:inline-block;margin:0 8px 8px 0;vertical-align:top}\n"
                       "figure img{max-width:340px;image-rendering:pixelated;border:1px solid #ccc;display:block}\n"
                       "figcaption{font-size:12px;color:#555}\n.none{display:inline-block;width:200px;color:#888}\n"

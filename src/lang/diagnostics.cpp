@@ -57,17 +57,34 @@ std::string escaped(unsigned char c) {
     return std::string("\\x") + hex[c >> 4] + hex[c & 15];
 }
 
+// The length of the whole UTF-8 character that starts at `j`, or 0 when no
+// valid one does.
+size_t utf8Length(const std::string& s, size_t j) {
+    const unsigned char c = static_cast<unsigned char>(s[j]);
+    const size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    if (n == 0 || j + n > s.size()) return 0;
+    for (size_t k = 1; k < n; ++k)
+        if ((static_cast<unsigned char>(s[j + k]) & 0xC0) != 0x80) return 0;
+    return n;
+}
+
 // How many bytes of a control character start at `i` (tab excepted): 1 for
 // C0 and DEL, 2 for a C1 character in UTF-8 (U+0080..U+009F, "\xc2\x9b" is
-// CSI: a terminal takes it as the start of an escape sequence); 0 for text.
+// CSI: a terminal takes it as the start of an escape sequence), 1 for a byte
+// above 0x7f that is no part of a whole UTF-8 character (a lone 0x9b is CSI
+// to a terminal in an 8-bit mode; issue 37); 0 for text.
 size_t controlBytes(const std::string& s, size_t i) {
     const unsigned char c = static_cast<unsigned char>(s[i]);
     if (isControl(c)) return c == '\t' ? 0 : 1;
-    if (c == 0xc2 && i + 1 < s.size()) {
+    if (c < 0x80) return 0;
+    if (const size_t n = utf8Length(s, i)) {
         const unsigned char d = static_cast<unsigned char>(s[i + 1]);
-        if (d >= 0x80 && d <= 0x9f) return 2;
+        return c == 0xc2 && d >= 0x80 && d <= 0x9f ? 2 : 0;
     }
-    return 0;
+    if ((c & 0xC0) == 0x80)  // a continuation byte: text when a whole character before it covers it
+        for (size_t back = 1; back <= 3 && back <= i; ++back)
+            if (utf8Length(s, i - back) > back) return 0;
+    return 1;
 }
 
 // The control character at `i` (controlBytes(s, i) bytes) as \xNN escapes.
@@ -128,7 +145,7 @@ const char* severityName(Severity s) {
 }
 
 std::string formatDiagnostic(const Diagnostic& d, const SourceTexts& sources) {
-    std::string out = d.file;
+    std::string out = sanitizeForTerminal(d.file, false);  // a folder name may hold ESC (issue 37)
     if (d.loc.line > 0) {
         out += ':' + std::to_string(d.loc.line);
         if (d.loc.col > 0) out += ':' + std::to_string(d.loc.col);

@@ -90,7 +90,7 @@ std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, con
         if (n < 2) {
             std::string text = formatDiagnostic(d, sources);
             if (std::string more = followers(errorsAfter[i], warningsAfter[i]); !more.empty())
-                text += fmt::format("\n{}:{}: note: {}", d.file, d.loc.line, more);
+                text += fmt::format("\n{}:{}: note: {}", sanitizeForTerminal(d.file, false), d.loc.line, more);
             out.push_back(text);
             continue;
         }
@@ -99,8 +99,11 @@ std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, con
             if (d.message.find(k.contains) != std::string::npos) summary = fmt::format(fmt::runtime(k.summary), n);
         if (summary.empty())
             summary = fmt::format("{} warnings like this one (line {} first): {}; -v to list them", n, d.loc.line,
-                                  d.message);
-        out.push_back(fmt::format("{}: warning: {}", d.file, summary));
+                                  sanitizeForTerminal(d.message, false));
+        // The message and the name come from the student's files: escaped,
+        // as formatDiagnostic escapes a single one (issue 37: a script line
+        // "ESC c" reset the teacher's terminal when it came twice).
+        out.push_back(fmt::format("{}: warning: {}", sanitizeForTerminal(d.file, false), summary));
     }
     return out;
 }

@@ -73,6 +73,20 @@ TEST(GradeReport, CsvGuardsATabOrCarriageReturnFirst) {
               "\"'\r=1+1\",2,wrong,0.0000,0.00,0.00,,,,,\n");
 }
 
+// Issue 37: a leading space, a full-width ＝ ＋ － ＠ (spreadsheets read them
+// as = + - @), and control bytes from a folder name or a comment (ESC, NUL).
+TEST(GradeReport, CsvGuardsSpacesFullWidthSignsAndControlBytes) {
+    GradeRow space = row(" =1+1", "wrong", 1), wide = row("\xef\xbc\x9d" "1+1", "wrong", 2),
+             esc = row("a\x1b[31mb", "wrong", 3), plain = row("Ada Lovelace", "pass", 4);
+    esc.comment = std::string("nul\0here", 8);
+    EXPECT_EQ(gradesCsv({space, wide, esc, plain}),
+              "student,score,verdict,ssim,psnr_db,seconds,notes,first_diagnostic,submission,computed_score,comment\n"
+              "' =1+1,1,wrong,0.0000,0.00,0.00,,,,,\n"
+              "Ada Lovelace,4,pass,0.0000,0.00,0.00,,,,,\n"
+              "a\\x1b[31mb,3,wrong,0.0000,0.00,0.00,,,,,nul\\x00here\n"
+              "'\xef\xbc\x9d" "1+1,2,wrong,0.0000,0.00,0.00,,,,,\n");  // in name order, bytewise
+}
+
 // Issue 26: a student's name goes into attributes (the row's id, the glance
 // strip's link): a '"' in it must not end the attribute.
 // Issue 29: the teacher's overrides file. Scores replace the computed ones
