@@ -96,10 +96,13 @@ int runRender(const RenderOptions& o) {
 
     // Never over one of the script's own files (process/output_guard.h).
     std::vector<std::pair<std::string, std::string>> outputs;  // option, file
-    if (out.kind == Output::Kind::Png || out.kind == Output::Kind::Webp) outputs.push_back({"-o", o.output});
+    // Every kind but standard output: a frame pattern's every frame, and a
+    // watch's file (written by its name as given; issue 37).
+    if (out.kind != Output::Kind::Stdout) outputs.push_back({"-o", o.output});
     for (const auto& d : dumps) outputs.push_back({fmt::format("--dump {}", d.unit), d.file});
     for (const auto& [option, file] : outputs) {
-        if (std::string refusal = overwritesAnInput(s.loaded.plan, option, file, "picture"); !refusal.empty()) {
+        if (std::string refusal = overwritesAnInput(s.loaded.plan, option, file, "picture", std::max(1, o.frames));
+            !refusal.empty()) {
             std::cerr << refusal;
             return kExitUsage;
         }

@@ -19,7 +19,14 @@ std::string inputOverwrittenBy(const Plan& plan, const std::string& output);
 // of the script's inputs: "glimmer: error: -o f.frag: that is 'f.frag', which
 // the script reads; write the picture under another name" (`what`: "picture",
 // "sheet"); "" when it is not.
+// Also refused: a folder, a FIFO, a device, or a name under /dev, /proc or
+// /sys (open() on a FIFO blocks; "/dev/full.png" is never a picture). A frame
+// pattern ("frame%d.png") is checked for each of its first `frames` names.
 std::string overwritesAnInput(const Plan& plan, const std::string& option, const std::string& file,
-                              const std::string& what);
+                              const std::string& what, int frames = 1);
+
+// Why `file` is no file to write a picture to ("a FIFO ...", "under /dev/,
+// not a file"), or "" when it may be one.
+std::string notAFileToWrite(const std::string& file);
 
 }  // namespace glimmer

@@ -21,6 +21,7 @@
 
 #include "backends/glfw_window.h"
 #include "pipeline/options.h"
+#include "process/output_guard.h"
 #include "pipeline/prepare_script.h"
 #include "gl/window_frame.h"
 #include "plan/dependencies.h"
@@ -431,12 +432,21 @@ private:
         }
         // A command may have changed values since the last frame, and a
         // frame may be under way: what is saved is the finished picture.
+        // Never over one of the script's own files (issue 37: `save
+        // bright.frag` turned the shader into a PNG).
+        if (std::string refusal = overwritesAnInput(s_.good->plan, "save", file, "picture"); !refusal.empty()) {
+            s_.status = sanitizeForTerminal(refusal.substr(std::string("glimmer: error: ").size()), true);
+            if (!s_.status.empty() && s_.status.back() == '\n') s_.status.pop_back();
+            std::cerr << "glimmer view: " << s_.status << "\n";
+            return;
+        }
         Image img = core_.savedPicture(hardcopy);
         noteHealth();
         if (img.empty()) return;
         std::string why;
-        if (writePng(file, img, why)) s_.status = "saved " + file;
-        else s_.status = why;
+        // The name as typed may hold ESC (issue 37): echoed escaped.
+        if (writePng(file, img, why)) s_.status = "saved " + sanitizeForTerminal(file, false);
+        else s_.status = sanitizeForTerminal(why, false);
         std::cerr << "glimmer view: " << s_.status << "\n";
     }
 

@@ -89,6 +89,24 @@ TEST(Viewer, ExecRunsCommandsAndQuits) {
     EXPECT_EQ(readBytes(p.dir / "exec.png"), readBytes(p.dir / "render.png"));
 }
 
+// `save` never writes over one of the script's own files (issue 37: `save
+// bloom.frag` turned the shader into a PNG); a name it may use still saves.
+TEST(Viewer, SaveRefusesTheScriptsOwnFiles) {
+    Project p;
+    const auto frag = readBytes(p.dir / "bloom.frag"), glib = readBytes(p.dir / "bloom.glib");
+    ViewerProcess v({"bloom.glib", "--size", "64x64", "--no-stdin", "--exec",
+                     "save bloom.frag; save ./x1/../bloom.glib; save fine.png; quit"},
+                    p.dir);
+    ASSERT_TRUE(waitForFile(p.dir / "fine.png")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    EXPECT_TRUE(v.waitForLog("glimmer view: save bloom.frag: that is 'bloom.frag', which the script reads; write the "
+                             "picture under another name")) << v.log();
+    EXPECT_TRUE(v.waitForLog("glimmer view: save ./x1/../bloom.glib: that is 'bloom.glib', which the script reads"))
+        << v.log();
+    EXPECT_EQ(readBytes(p.dir / "bloom.frag"), frag);
+    EXPECT_EQ(readBytes(p.dir / "bloom.glib"), glib);
+}
+
 // The panel's health badge has a twin on stderr: a float target holding a
 // NaN is reported as soon as it is drawn.
 TEST(Viewer, ReportsANanInATarget) {
