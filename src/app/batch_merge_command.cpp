@@ -51,7 +51,8 @@ int runBatchMerge(const BatchMergeOptions& o) {
         if (shards.empty()) {
             header = h;
             students = list;
-        } else if (list != students || h.settings != header.settings || h.solution != header.solution) {
+        } else if (list != students || h.settings != header.settings || h.solution != header.solution ||
+                   h.solutionContent != header.solutionContent) {
             std::cerr << fmt::format("{}: error: graded another class, solution or settings than {}\n", headerFile,
                                      (fs::path(o.shards[0]) / "grading.txt").string());
             return kExitUsage;

@@ -27,6 +27,7 @@
 #include "grade/grading.h"
 #include "grade/safe_unzip.h"
 #include "grade/submissions.h"
+#include "plan/inputs.h"
 #include "plan/limits.h"
 #include "util/read_file.h"
 
@@ -114,10 +115,41 @@ double gradingTimeLimit(const BatchResult& solution, std::string& how, std::vect
     return total;
 }
 
+// FNV-1a over the solution's script and every file it reads, each with its
+// name: what --resume compares (a file that cannot be read counts as its name).
+std::string solutionContent(const std::string& script, const Plan& plan) {
+    std::uint64_t h = 1469598103934665603ull;
+    auto add = [&](const std::string& bytes) {
+        for (unsigned char c : bytes) h = (h ^ c) * 1099511628211ull;
+        h = (h ^ 0xff) * 1099511628211ull;  // a separator, so "ab"+"c" is not "a"+"bc"
+    };
+    std::vector<std::string> files = {script};
+    for (const PlanInput& in : inputsOf(plan)) files.push_back(in.path);
+    for (const std::string& f : files) {
+        std::string text, why;
+        add(fs::path(f).filename().string());
+        if (readRegularFile(f, std::size_t(1) << 30, text, why)) add(text);
+    }
+    return fmt::format("{:016x}", h);
+}
+
 // Unique file stems for the students' pictures ("alice", "alice-2", ...).
+// A stem is at most kMaxStemBytes (cut where a UTF-8 character starts): a
+// picture is STEM-k.png and a page STEM.html, and most file systems take
+// 255 bytes a name (issue 37: a correct submission in a folder of 250
+// characters was "error, cannot write ... File name too long").
+constexpr size_t kMaxStemBytes = 120;
 std::vector<std::string> pictureStems(const std::vector<Submission>& subs) {
     std::vector<std::string> names;
-    for (const auto& s : subs) names.push_back(s.name + ".glib");
+    for (const auto& s : subs) {
+        std::string name = s.name;
+        if (name.size() > kMaxStemBytes) {
+            size_t cut = kMaxStemBytes;
+            while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;
+            name.resize(cut);
+        }
+        names.push_back(name + ".glib");
+    }
     auto out = batchOutputNames(names);
     for (auto& n : out) n.resize(n.size() - 4);
     return out;
@@ -141,9 +173,15 @@ bool loadOverrides(const std::string& file, std::map<std::string, Override>& out
 }
 
 void warnUnusedOverrides(std::vector<GradeRow> rows, const std::map<std::string, Override>& overrides) {
-    for (const auto& name : applyOverrides(rows, overrides))
+    // The first few by name, the rest counted (issue 37: 99,999 unknown
+    // names printed 9.3 MB of warnings).
+    constexpr size_t kNamed = 5;
+    const std::vector<std::string> unknown = applyOverrides(rows, overrides);
+    for (size_t k = 0; k < unknown.size() && k < kNamed; ++k)
         std::cerr << fmt::format("glimmer: warning: --overrides names '{}', whom no row has (as the report names "
-                                 "students)\n", sanitizeForTerminal(name, false));
+                                 "students)\n", sanitizeForTerminal(unknown[k], false));
+    if (unknown.size() > kNamed)
+        std::cerr << fmt::format("glimmer: warning: --overrides names {} more whom no row has\n", unknown.size() - kNamed);
 }
 
 int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs, int shard, int shards,
@@ -221,6 +259,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     for (const auto& s : settings) header.settings.push_back(settingLabel(s));
     header.thresholds = thresholdsText(thresholds);
     header.sandbox = !o.noSandbox;
+    header.solutionContent = solutionContent(o.reference, solution.plan);
     std::vector<std::string> mine;
     for (size_t i = 0; i < subs.size(); ++i)
         if (inShard(i, shard, shards)) mine.push_back(stems[i]);
@@ -242,10 +281,14 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
             return kExitUsage;
         }
         if (before.solution != header.solution || before.settings != header.settings ||
-            before.thresholds != header.thresholds || before.sandbox != header.sandbox) {
-            std::cerr << fmt::format("glimmer: error: --resume: {} was graded with another solution, settings, "
+            before.thresholds != header.thresholds || before.sandbox != header.sandbox ||
+            before.solutionContent != header.solutionContent) {
+            std::cerr << fmt::format("glimmer: error: --resume: {} was graded with another solution{}, settings, "
                                      "thresholds or sandbox; grade it again without --resume, or into another -o\n",
-                                     o.outputDir);
+                                     o.outputDir,
+                                     before.solution == header.solution && before.solutionContent != header.solutionContent
+                                         ? " (the same name, other content)"
+                                         : "");
             return kExitUsage;
         }
     }
@@ -309,11 +352,14 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
 
     std::map<std::string, std::string> rowHtml;
     auto lastWrite = std::chrono::steady_clock::now();
+    std::map<std::string, std::string> scriptChosen;  // student -> which of several scripts was graded, and why
     auto keep = [&](GradeRow r) {
         // Nothing to compare: still show what was asked for (the solution at its defaults).
         if (r.solution.empty()) r.solution = fs::relative(solutionJob.outputs[0], out, ec).string();
         if (auto twice = handedInTwice.find(r.submission); twice != handedInTwice.end())
             r.notes += (r.notes.empty() ? "" : "; ") + twice->second;
+        if (auto chose = scriptChosen.find(r.student); chose != scriptChosen.end())
+            r.notes += (r.notes.empty() ? "" : "; ") + chose->second;
         rows.push_back(r);
         recordOut << gradeRecord(r) << "\n";
         recordOut.flush();
@@ -343,7 +389,9 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                 continue;
             }
         }
-        std::string script = findScript(folder, why);
+        std::string chose;
+        std::string script = findScript(folder, why, fs::path(o.reference).filename().string(), &chose);
+        if (!chose.empty()) scriptChosen[stems[i]] = chose;
         if (script.empty()) {
             r.verdict = "error";
             r.notes = why.find("no .glib") != std::string::npos ? "no script" : "more than one script";

@@ -7,6 +7,12 @@ namespace glimmer {
 
 namespace {
 
+// An option given with an empty value ("--watch ''") is a mistake, not the
+// option left out (issue 37: both were silently ignored).
+const CLI::Validator kNotEmpty(
+    [](std::string& value) { return value.empty() ? std::string("an empty value; give one or leave the option out") : std::string(); },
+    "", "not empty");
+
 void addCommon(CLI::App* sub, CommonOptions& o) {
     sub->add_option("script", o.script, "the .glib script ('-': read it from standard input; the files it names "
                                         "resolve against the current folder)")->required();
@@ -41,10 +47,12 @@ void addRenderCommand(CLI::App& app, RenderOptions& o) {
     sub->add_option("--watch", o.watch, "FILE:LINE:EXPR: write the value of a GLSL expression right after that line "
                                         "runs, over the whole pass, instead of the picture: -o .png shows it, .exr "
                                         "or .pfm holds the floats; prints its range and NaN/Inf counts")
-        ->type_name("FILE:LINE:EXPR");
+        ->type_name("FILE:LINE:EXPR")
+        ->check(kNotEmpty);
     sub->add_option("--watch-range", o.watchRange, "LO,HI: the values shown black to white (default: their own "
                                                    "minimum and maximum); outside it, marked")
-        ->type_name("LO,HI");
+        ->type_name("LO,HI")
+        ->check(kNotEmpty);
 }
 
 void addCheckCommand(CLI::App& app, CheckOptions& o) {
@@ -56,7 +64,8 @@ void addCheckCommand(CLI::App& app, CheckOptions& o) {
                                                  "one a line (tools/web_lesson.py packs these)");
     sub->add_option("--watch", o.watch, "FILE:LINE:EXPR: also check that the expression can be watched there "
                                         "(in scope, a line inside a function, a type a watch shows)")
-        ->type_name("FILE:LINE:EXPR");
+        ->type_name("FILE:LINE:EXPR")
+        ->check(kNotEmpty);
 }
 
 void addViewCommand(CLI::App& app, ViewOptions& o) {

@@ -13,6 +13,7 @@ std::string runHeaderText(const ReportHeader& h, const std::vector<std::string>&
     for (const auto& s : h.settings) out += "setting: " + s + "\n";
     out += "thresholds: " + h.thresholds + "\n";
     out += std::string("sandbox: ") + (h.sandbox ? "on" : "off") + "\n";
+    if (!h.solutionContent.empty()) out += "solution-content: " + h.solutionContent + "\n";
     for (const auto& s : students) out += "student: " + s + "\n";
     return out;
 }
@@ -32,6 +33,7 @@ bool parseRunHeader(const std::string& text, ReportHeader& h, std::vector<std::s
         else if (key == "setting") h.settings.push_back(value);
         else if (key == "thresholds") h.thresholds = value;
         else if (key == "sandbox") h.sandbox = value == "on";
+        else if (key == "solution-content") h.solutionContent = value;
         else if (key == "student") students.push_back(value);
         else return error = fmt::format("line {}: unknown key '{}'", n, key), false;
     }

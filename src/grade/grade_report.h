@@ -15,6 +15,10 @@ struct ReportHeader {
     std::vector<std::string> settings;    // their labels
     std::string thresholds;               // in words
     bool sandbox = true;
+    // A hash of the solution's script and every file it reads: --resume
+    // compares the solution's content, not only its path (issue 37: a
+    // changed solution under the same name kept stale grades). "" before.
+    std::string solutionContent;
     int expected = 0;                     // submissions in the class (the page says how many are still missing)
 };
 

@@ -68,7 +68,7 @@ std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, 
 
 constexpr int kScriptSearchDepth = 8;
 
-std::string findScript(const std::string& folder, std::string& error) {
+std::string findScript(const std::string& folder, std::string& error, const std::string& preferred, std::string* note) {
     error.clear();
     fs::path root(folder);
     std::error_code ec;
@@ -112,6 +112,14 @@ std::string findScript(const std::string& folder, std::string& error) {
     } else {
         std::string names;
         for (const auto& f : found) names += (names.empty() ? "" : ", ") + f;
+        std::vector<std::string> named;
+        for (const auto& f : found)
+            if (!preferred.empty() && fs::path(f).filename() == preferred) named.push_back(f);
+        if (named.size() == 1) {
+            if (note) *note = fmt::format("{} .glib scripts ({}): graded {}, named like the solution's", found.size(), names,
+                                          named[0]);
+            return (root / named[0]).string();
+        }
         error = fmt::format("{}: error: {} .glib scripts ({}); keep one", folder, found.size(), names);
     }
     return "";

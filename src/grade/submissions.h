@@ -24,7 +24,12 @@ std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, 
 // (hidden folders and __MACOSX skipped; at most 10000 entries looked at).
 // "" with `error` set ("class/bob: error: no .glib script in this
 // submission", "... 2 .glib scripts (a.glib, sub/b.glib); keep one") otherwise.
-// A path ending in .glib is its own script.
-std::string findScript(const std::string& folder, std::string& error);
+// A path ending in .glib is its own script. With several, the one whose file
+// name is `preferred` (grading: the solution's script's name), when exactly
+// one is, and `note` says so ("2 .glib scripts (bloom.glib,
+// old/bloom_old.glib): graded bloom.glib, named like the solution's"; issue
+// 37: a student who kept the old version beside the new one).
+std::string findScript(const std::string& folder, std::string& error, const std::string& preferred = "",
+                       std::string* note = nullptr);
 
 }  // namespace glimmer

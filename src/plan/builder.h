@@ -144,6 +144,11 @@ private:
 
     void cubeMap(const Command& c);
 
+    // The file under another case of the same name in a folder looked in,
+    // resolved as the name itself would be, with a warning naming both; ""
+    // when there is none (glman ran on Windows: 'Bright.frag' opened
+    // bright.frag there).
+    std::string caseVariant(const Arg& a, const char* what, const std::vector<std::string>& tried);
     bool notFound(SourceLoc loc, const char* what, const std::string& name, const std::vector<std::string>& tried,
                   const std::string& standIn);
 

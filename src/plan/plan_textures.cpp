@@ -50,13 +50,17 @@ std::string Builder::findFile(const Arg& a, const char* what, bool& usable, cons
     usable = false;
     if (!options_.sandbox) {
         std::string path = resolveFile(file(), a.text, options_.includeDirs, &tried);
+        if (path.empty()) path = caseVariant(a, what, tried);
         usable = !path.empty() || notFound(a.loc, what, a.text, tried, standIn);
         return path;
     }
     std::string path, why;
     switch (resolveSandboxed(file(), a.text, options_.includeDirs, path, tried, why)) {
     case SandboxLookup::Found: usable = true; return path;
-    case SandboxLookup::NotFound: usable = notFound(a.loc, what, a.text, tried, standIn); break;
+    case SandboxLookup::NotFound:
+        path = caseVariant(a, what, tried);
+        usable = !path.empty() || notFound(a.loc, what, a.text, tried, standIn);
+        return path;
     case SandboxLookup::Outside:
         diags_.error(file(), a.loc, fmt::format("{} '{}' is outside the sandbox ({}); --sandbox reads only files "
                                                 "in the script's folder and -I folders", what, a.text, why));
@@ -221,6 +225,19 @@ void Builder::cubeMap(const Command& c) {
     t.path = t.facePaths[0];
     t.shown = t.faceShown[0];
     bindTexture(unit, std::move(t));
+}
+
+std::string Builder::caseVariant(const Arg& a, const char* what, const std::vector<std::string>& tried) {
+    const std::string other = sameNameButCase(tried, a.text);
+    if (other.empty()) return {};
+    std::vector<std::string> again;
+    std::string path, why;
+    if (!options_.sandbox) path = resolveFile(file(), other, options_.includeDirs, &again);
+    else if (resolveSandboxed(file(), other, options_.includeDirs, path, again, why) != SandboxLookup::Found) path.clear();
+    if (path.empty()) return {};
+    diags_.warning(file(), a.loc, fmt::format("{} '{}' is '{}' on disk: opened it, as Windows and macOS do; write it "
+                                              "'{}' for Linux", what, a.text, other, other));
+    return path;
 }
 
 // An error; with --stand-ins (not for a shader) a warning, and true: the
