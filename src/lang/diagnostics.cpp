@@ -57,17 +57,6 @@ std::string escaped(unsigned char c) {
     return std::string("\\x") + hex[c >> 4] + hex[c & 15];
 }
 
-// The length of the whole UTF-8 character that starts at `j`, or 0 when no
-// valid one does.
-size_t utf8Length(const std::string& s, size_t j) {
-    const unsigned char c = static_cast<unsigned char>(s[j]);
-    const size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-    if (n == 0 || j + n > s.size()) return 0;
-    for (size_t k = 1; k < n; ++k)
-        if ((static_cast<unsigned char>(s[j + k]) & 0xC0) != 0x80) return 0;
-    return n;
-}
-
 // How many bytes of a control character start at `i` (tab excepted): 1 for
 // C0 and DEL, 2 for a C1 character in UTF-8 (U+0080..U+009F, "\xc2\x9b" is
 // CSI: a terminal takes it as the start of an escape sequence), 1 for a byte
@@ -97,6 +86,15 @@ std::string escapedAt(const std::string& s, size_t i, size_t n) {
 bool continuation(char c) { return (static_cast<unsigned char>(c) & 0xC0) == 0x80; }
 
 }  // namespace
+
+size_t utf8Length(const std::string& s, size_t j) {
+    const unsigned char c = static_cast<unsigned char>(s[j]);
+    const size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+    if (n == 0 || j + n > s.size()) return 0;
+    for (size_t k = 1; k < n; ++k)
+        if ((static_cast<unsigned char>(s[j + k]) & 0xC0) != 0x80) return 0;
+    return n;
+}
 
 std::string sanitizeForTerminal(const std::string& text, bool keepNewlines) {
     std::string out;

@@ -77,6 +77,10 @@ constexpr size_t kMaxPrintedDiagnostics = 100;
 // kept when `keepNewlines`), each line cut to kMaxEchoedChars characters.
 std::string sanitizeForTerminal(const std::string& text, bool keepNewlines);
 
+// The length in bytes of the whole UTF-8 character that starts at `j` of
+// `s`, or 0 when no valid one does (a stray byte, a cut sequence).
+std::size_t utf8Length(const std::string& s, std::size_t j);
+
 // The one message for a script past --max-memory, whichever step counted it
 // (the parser's structures, the plan's textures and targets, the load step's
 // images, meshes and models): "the script needs N MiB by this line, ...".

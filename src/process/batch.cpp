@@ -1,7 +1,4 @@
 #include "process/batch.h"
-#include "process/batch_worker.h"
-#include "util/json.h"
-#include "process/child_guard.h"
 
 #include <poll.h>
 #include <signal.h>
@@ -15,6 +12,11 @@
 #include <set>
 
 #include <fmt/format.h>
+
+#include "lang/diagnostics.h"
+#include "process/batch_worker.h"
+#include "process/child_guard.h"
+#include "util/json.h"
 
 
 namespace glimmer {
@@ -371,12 +373,8 @@ namespace {
 // The length of the UTF-8 character beyond ASCII at `k` of `s`, when it is a
 // whole one and not a C1 control; 0 otherwise.
 size_t utf8Letter(const std::string& s, size_t k) {
-    const unsigned char c = static_cast<unsigned char>(s[k]);
-    const size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
-    if (n == 0 || k + n > s.size()) return 0;
-    for (size_t i = 1; i < n; ++i)
-        if ((static_cast<unsigned char>(s[k + i]) & 0xC0) != 0x80) return 0;
-    if (c == 0xC2 && static_cast<unsigned char>(s[k + 1]) <= 0x9F) return 0;  // C1
+    const size_t n = utf8Length(s, k);
+    if (n == 2 && static_cast<unsigned char>(s[k]) == 0xC2 && static_cast<unsigned char>(s[k + 1]) <= 0x9F) return 0;  // C1
     return n;
 }
 
