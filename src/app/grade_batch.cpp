@@ -150,7 +150,7 @@ std::vector<std::string> pictureStems(const std::vector<Submission>& subs) {
         }
         names.push_back(name + ".glib");
     }
-    auto out = batchOutputNames(names);
+    auto out = batchOutputNames(names, true);
     for (auto& n : out) n.resize(n.size() - 4);
     return out;
 }
@@ -197,8 +197,10 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         return kExitUsage;
     }
     std::vector<std::string> errors;
-    std::vector<Submission> subs = listSubmissions(inputs, errors);
+    std::vector<std::string> skippedHidden;
+    std::vector<Submission> subs = listSubmissions(inputs, errors, &skippedHidden);
     for (const auto& e : errors) std::cerr << e << "\n";
+    for (const auto& w : skippedHidden) std::cerr << sanitizeForTerminal(w, false) << "\n";
     {  // -o inside the class folder is not a student
         std::error_code ec;
         std::erase_if(subs, [&](const Submission& sub) { return fs::equivalent(sub.path, o.outputDir, ec); });

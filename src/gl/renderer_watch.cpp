@@ -90,6 +90,10 @@ WatchCapture Renderer::renderWatch(int passIndex, const UniformValues& values, d
         const GLbitfield clear = GL_COLOR_BUFFER_BIT | (pass.needsDepth ? GL_DEPTH_BUFFER_BIT : 0);
         gl_->ClearColor(0, 0, 0, 0);  // nothing drawn: info x = 0
         gl_->Clear(clear);
+        // The watched pass is announced as render() announces its passes, so
+        // a --timeout names its line (issue 37: "while loading and
+        // compiling", with no line).
+        if (passListener_) passListener_(passIndex);
         std::swap(programs_[size_t(watchedProgram_)], watch_);
         for (const auto& s : pass.steps) {
             if (s.kind == Step::Kind::Clear) {

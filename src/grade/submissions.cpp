@@ -29,7 +29,8 @@ bool holdsScript(const fs::path& dir) {
 
 }  // namespace
 
-std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, std::vector<std::string>& errors) {
+std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, std::vector<std::string>& errors,
+                                        std::vector<std::string>* warnings) {
     std::vector<Submission> out;
     for (const auto& input : inputs) {
         fs::path p(input);
@@ -49,7 +50,13 @@ std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, 
             }
             std::vector<Submission> inside;
             for (const auto& e : fs::directory_iterator(p, ec)) {
-                if (skipped(e.path())) continue;
+                if (skipped(e.path())) {
+                    const bool looksHandedIn = e.is_directory(ec) || (e.is_regular_file(ec) && hasExtension(e.path(), ".zip"));
+                    if (warnings && looksHandedIn && e.path().filename() != "__MACOSX")
+                        warnings->push_back(fmt::format("glimmer: warning: {}: skipped, its name starts with '.' (hidden); "
+                                                        "rename it to grade it", e.path().string()));
+                    continue;
+                }
                 if (e.is_directory(ec)) inside.push_back({e.path().filename().string(), e.path().string(), false});
                 else if (e.is_regular_file(ec) && hasExtension(e.path(), ".zip"))
                     inside.push_back({e.path().stem().string(), e.path().string(), true});

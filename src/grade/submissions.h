@@ -18,7 +18,10 @@ struct Submission {
 // and zip directly inside it is one; a .glib file is one on its own. Hidden
 // entries and __MACOSX are skipped. `errors` gets a line for each input that
 // is none of these.
-std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, std::vector<std::string>& errors);
+// `warnings` (when given) gets a line for each hidden folder or zip of a
+// class that is skipped: a student's ".late" is said, not lost (issue 37).
+std::vector<Submission> listSubmissions(const std::vector<std::string>& inputs, std::vector<std::string>& errors,
+                                        std::vector<std::string>* warnings = nullptr);
 
 // The one .glib in a submission folder, searched up to three folders deep
 // (hidden folders and __MACOSX skipped; at most 10000 entries looked at).

@@ -380,7 +380,7 @@ size_t utf8Letter(const std::string& s, size_t k) {
 
 }  // namespace
 
-std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts) {
+std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts, bool keepSpaces) {
     std::vector<std::string> out;
     std::set<std::string> used;
     for (const auto& s : scripts) {
@@ -391,7 +391,7 @@ std::vector<std::string> batchOutputNames(const std::vector<std::string>& script
         for (size_t k = 0; k < base.size();) {
             const unsigned char c = static_cast<unsigned char>(base[k]);
             bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                         c == '_' || c == '.';
+                         c == '_' || c == '.' || (keepSpaces && c == ' ');
             // A name keeps its letters as written in UTF-8 (Jürgen, 李雷: issue 29,
             // they were J__rgen and 'script'); a byte that is not part of a
             // whole UTF-8 character, or a C1 control (U+0080..U+009F), is '_'.
@@ -403,7 +403,8 @@ std::vector<std::string> batchOutputNames(const std::vector<std::string>& script
             name += plain ? char(c) : '_';
             ++k;
         }
-        while (!name.empty() && (name.front() == '_' || name.front() == '.')) name.erase(0, 1);
+        while (!name.empty() && (name.front() == '_' || name.front() == '.' || name.front() == ' ')) name.erase(0, 1);
+        while (!name.empty() && name.back() == ' ') name.pop_back();
         if (name.empty()) name = "script";
         std::string unique = name;
         for (int k = 2; used.count(unique); ++k) unique = fmt::format("{}-{}", name, k);

@@ -221,5 +221,35 @@ TEST(CliHostileFourth, ASubmissionInAFolderOfALongNameIsGraded) {
     EXPECT_TRUE(fs::exists(dir.path() / "out" / "feedback" / (std::string(120, 'L') + ".html")));
 }
 
+// A watched pass that runs out of time is named by its line, as any pass
+// is (it was "while loading and compiling the script", with no line).
+TEST(CliHostileFourth, ASlowWatchedPassIsNamedByItsLine) {
+    TempDir dir;
+    const std::string script = writeRunawayScript(dir);
+    auto r = runGlimmer({"render", script, "--backend", "osmesa", "--size", "64x64", "--timeout", "2", "--watch",
+                         "slow.frag:48:a", "-o", dir.file("w.png")},
+                        60);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_NE(r.err.find(script + ":9:1: error: stopped after 2 s (--timeout 2): the pass that starts here was still "),
+              std::string::npos) << r.err;
+}
+
+// Names as written (issue 37): "Jürgen Groß" keeps its space in the student
+// column, and a hidden folder of a class is said, not skipped in silence.
+TEST(CliHostileFourth, NamesAsWrittenAndHiddenHandInsSaid) {
+    TempDir dir;
+    const fs::path cls = dir.path() / "class";
+    copySolution(cls / "J\xc3\xbcrgen Gro\xc3\x9f");
+    copySolution(cls / ".late");
+    auto r = runGlimmer({"batch", cls.string(), "--reference", (kSolution / "rings.glib").string(), "-o",
+                         (dir.path() / "out").string(), "--size", "32x32", "--backend", "osmesa"},
+                        120);
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string csv = readAll(dir.path() / "out" / "grades.csv");
+    EXPECT_NE(csv.find("\nJ\xc3\xbcrgen Gro\xc3\x9f,100,pass,"), std::string::npos) << csv;
+    EXPECT_EQ(countOf(r.err, "glimmer: warning: " + (cls / ".late").string() +
+                                 ": skipped, its name starts with '.' (hidden); rename it to grade it\n"), 1) << r.err;
+}
+
 }  // namespace
 }  // namespace glimmer_cli
