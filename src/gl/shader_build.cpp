@@ -148,22 +148,6 @@ std::string localConstAccepted(const std::string& message) {
                        constName(message));
 }
 
-// `text` with the last whole word 'const' before `loc` on its line blanked
-// out (columns keep their places); unchanged when there is none.
-std::string withoutConstBefore(std::string text, SourceLoc loc) {
-    const size_t start = lineStartOf(text, loc.line);
-    if (start == std::string::npos) return text;
-    size_t end = std::min(text.find('\n', start), start + size_t(std::max(loc.col - 1, 0)));
-    if (end == std::string::npos) end = text.size();
-    for (size_t at = text.rfind("const", end); at != std::string::npos && at >= start;
-         at = at == 0 ? std::string::npos : text.rfind("const", at - 1)) {
-        if (isWholeWordAt(text, at, 5)) {
-            text.replace(at, 5, "     ");
-            break;
-        }
-    }
-    return text;
-}
 
 // The first compatibility built-in an error of the log names as undeclared
 // ("gl_Vertex"); "" when none does.
@@ -343,7 +327,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                     for (const auto& d : again.said.all())
                         if (isConstInitializerError(d)) globals.push_back(d);
                     std::string relaxed = text;
-                    for (const auto& d : globals) relaxed = withoutConstBefore(relaxed, d.loc);
+                    for (const auto& d : globals) relaxed = withoutConstBefore(relaxed, d.loc.line, d.loc.col);
                     Compiled third = globals.empty() ? Compiled{}
                                                      : compileStage(gl, stage, relaxed, prelude + kLocalConstExtension,
                                                                     scriptFile);
@@ -359,12 +343,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
                             }
                         c = std::move(third);
                         for (const auto& d : globals)
-                            diags.warning(stage.path, d.loc,
-                                          fmt::format("{} is a const outside any function set from a non-constant "
-                                                      "expression: 'const' dropped, so it is set when the shader "
-                                                      "starts, as NVIDIA's driver does; remove 'const' to run "
-                                                      "everywhere",
-                                                      constName(d.message)));
+                            diags.warning(stage.path, d.loc, globalConstDropped(constName(d.message)));
                     } else {
                         if (!globals.empty()) gl.DeleteShader(third.shader);
                         bool stays = false;

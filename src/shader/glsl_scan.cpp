@@ -1,5 +1,7 @@
 #include "shader/glsl_scan.h"
 
+#include <algorithm>
+
 namespace glimmer {
 namespace {
 
@@ -139,6 +141,26 @@ std::string firstWordWithPrefix(std::string_view text, std::string_view prefix) 
         if (end > at + prefix.size()) return std::string(text.substr(at, end - at));
     }
     return {};
+}
+
+std::string globalConstDropped(const std::string& quoted) {
+    return quoted + " is a const outside any function set from a non-constant expression: 'const' dropped, so it is "
+                    "set when the shader starts, as NVIDIA's driver does; remove 'const' to run everywhere";
+}
+
+std::string withoutConstBefore(std::string text, int line, int col) {
+    const size_t start = lineStartOf(text, line);
+    if (start == std::string::npos) return text;
+    size_t end = std::min(text.find('\n', start), start + size_t(std::max(col - 1, 0)));
+    if (end == std::string::npos) end = text.size();
+    for (size_t at = text.rfind("const", end); at != std::string::npos && at >= start;
+         at = at == 0 ? std::string::npos : text.rfind("const", at - 1)) {
+        if (isWholeWordAt(text, at, 5)) {
+            text.replace(at, 5, "     ");
+            break;
+        }
+    }
+    return text;
 }
 
 }  // namespace glimmer

@@ -60,6 +60,14 @@ std::vector<std::string_view> glslWords(std::string_view text);
 size_t lineStartOf(std::string_view text, int line);
 std::string_view lineOf(std::string_view text, int line);
 
+// `text` with the last whole word 'const' before column `col` of line
+// `line` blanked out (columns keep their places); unchanged when there is
+// none. NVIDIA's leniency for a global const set from a uniform, on the
+// desktop (gl/shader_build.cpp) and in the page (shader/web_translate.cpp).
+std::string withoutConstBefore(std::string text, int line, int col);
+// What both say when they drop it; `quoted`: the name as "`k2'".
+std::string globalConstDropped(const std::string& quoted);
+
 // The first whole word of `text` that starts with `prefix` ("gl_" finds
 // "gl_Vertex" in "'gl_Vertex' : undeclared identifier"); "" when none.
 std::string firstWordWithPrefix(std::string_view text, std::string_view prefix);

@@ -1,5 +1,7 @@
 #include "shader/web_translate.h"
 
+#include <algorithm>
+#include <cctype>
 #include <exception>
 #include <mutex>
 #include <vector>
@@ -11,6 +13,7 @@
 
 #include "shader/compat_builtins.h"
 #include "shader/compat_rewrite.h"
+#include "shader/glsl_scan.h"
 #include "shader/glslang_log.h"
 
 namespace glimmer {
@@ -59,6 +62,43 @@ bool compileToSpirv(const CompatRewrite& rewritten, EShLanguage language, const 
         return false;
     }
     return !spirv.empty();
+}
+
+// The identifier that ends just before column `col` of line `line` (the
+// name a "global const initializers" error stands after): "k2".
+std::string nameBefore(std::string_view text, int line, int col) {
+    std::string_view l = lineOf(text, line);
+    size_t end = std::min(l.size(), size_t(std::max(col - 1, 0)));
+    while (end > 0 && (l[end - 1] == ' ' || l[end - 1] == '\t')) --end;
+    size_t start = end;
+    while (start > 0 && (std::isalnum(static_cast<unsigned char>(l[start - 1])) || l[start - 1] == '_')) --start;
+    return std::string(l.substr(start, end - start));
+}
+
+// NVIDIA's leniency, as the desktop has it (gl/shader_build.cpp): a const
+// outside any function set from a non-constant expression (FogDragon's
+// dragon.vert:29) loses its 'const' (blanked: columns stay) and is set when
+// the shader starts. When `said` holds only such errors and the relaxed text
+// compiles: true, `said` its warnings, `spirv` the program (issue 37).
+bool dropGlobalConsts(const std::string& text, bool vertex, const WebTranslateInput& in, EShLanguage language,
+                      Diagnostics& said, std::vector<unsigned>& spirv) {
+    std::vector<SourceLoc> globals;
+    for (const auto& d : said.all())
+        if (d.severity == Severity::Error && d.message.find("global const initializers must be constant") != std::string::npos)
+            globals.push_back(d.loc);
+    if (globals.empty()) return false;
+    std::string relaxed = text;
+    for (const SourceLoc& at : globals) relaxed = withoutConstBefore(relaxed, at.line, at.col);
+    CompatRewrite again = rewriteCompatBuiltins(relaxed, vertex ? CompatStage::Vertex : CompatStage::Fragment,
+                                                definesOf(in.prelude));
+    Diagnostics second;
+    std::vector<unsigned> relaxedSpirv;
+    if (!compileToSpirv(again, language, in, relaxedSpirv, second)) return false;
+    said = std::move(second);
+    for (const SourceLoc& at : globals)
+        said.warning(in.file, at, globalConstDropped("`" + nameBefore(in.text, at.line, at.col) + "'"));
+    spirv = std::move(relaxedSpirv);
+    return true;
 }
 
 bool standInAttribute(const std::string& name) {
@@ -173,7 +213,13 @@ WebTranslation translateForWeb(const WebTranslateInput& in, Diagnostics& diags) 
     CompatRewrite rewritten = rewriteCompatBuiltins(initializers.text, vertex ? CompatStage::Vertex : CompatStage::Fragment,
                                                     definesOf(in.prelude));
     std::vector<unsigned> spirv;
-    if (!compileToSpirv(rewritten, language, in, spirv, diags)) return out;
+    Diagnostics said;
+    if (!compileToSpirv(rewritten, language, in, spirv, said) &&
+        !dropGlobalConsts(initializers.text, vertex, in, language, said, spirv)) {
+        for (const auto& d : said.all()) diags.add(d);
+        return out;
+    }
+    for (const auto& d : said.all()) diags.add(d);
     try {
         out.text = writeEs300(std::move(spirv), in.stage);
     } catch (const std::exception& e) {

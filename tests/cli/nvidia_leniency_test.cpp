@@ -54,6 +54,19 @@ TEST(CliNvidiaLeniency, ALocalConstFromAUniformIsAcceptedAndSaidSo) {
     EXPECT_EQ(img.u8[(8 * 16 + 8) * 4 + 1], 128);
 }
 
+// Issue 37: the page (check --web, the translation to WebGL 2) takes it as
+// the desktop does, with the same words (glslang's column: the '=').
+TEST(CliNvidiaLeniency, AGlobalConstFromAUniformIsTakenForTheWebToo) {
+    const std::string shader = cliData("const_global.frag");
+    auto r = runGlimmer({"check", "--web", cliData("const_global.glib")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, shader + ":5:16: warning: `k2' is a const outside any function set from a non-constant "
+                              "expression: 'const' dropped, so it is set when the shader starts, as NVIDIA's driver "
+                              "does; remove 'const' to run everywhere\n"
+                              "const float k2 = uK * 2.;\n"
+                              "               ^\n");
+}
+
 // Issue 31: a global const from a uniform is an error in every GLSL version;
 // NVIDIA's driver accepted it and the author saw a picture. The 'const' is
 // dropped (the value is set when the shader starts), with a warning at its line.

@@ -114,6 +114,22 @@ TEST(WebTranslateOnEs, ACompatibilityScriptDrawsTheDesktopsPicture) {
     EXPECT_GT(levels, 1) << "no stripes across the sphere";
 }
 
+// Issue 37: a global const set from a uniform (NVIDIA's leniency, FogDragon's
+// dragon.vert:29) runs in the page as on the desktop: the 'const' dropped,
+// the value set when the shader starts, the same picture at two settings.
+TEST(WebTranslateOnEs, AGlobalConstFromAUniformDrawsTheDesktopsPicture) {
+    PlanOptions options;
+    options.width = options.height = 16;
+    const std::string script = std::string(GLIMMER_TEST_DATA) + "/cli/const_global.glib";
+    for (const char* set : {"uK=.5", "uK=.2"}) {
+        Rendered desktop = renderScript("osmesa", script, {set}, {}, options);
+        Rendered es = renderScript("egl-gles", script, {set}, {}, options);
+        ASSERT_TRUE(es.ok) << set;
+        expectSamePicture(desktop, es, 16);
+        EXPECT_NEAR(es.screen.u8[0], std::string(set) == "uK=.5" ? 255 : 102, 1) << set;  // red = 2 uK
+    }
+}
+
 // glman classroom scripts whose shaders pass the colour through
 // gl_FrontColor / gl_Color and use the built-ins (tests/data/glman), drawn
 // through the translation on OpenGL ES and as written on the desktop.
