@@ -30,9 +30,25 @@ void copySolution(const fs::path& to, const std::string& frag = "") {
     if (!frag.empty()) std::ofstream(to / "rings.frag", std::ios::binary | std::ios::trunc) << frag;
 }
 
+// A control byte a terminal would act on: C0 but newline and tab, DEL, a C1
+// character in UTF-8 (U+0080..U+009F), or a byte 0x80..0x9f that is no part
+// of a whole UTF-8 character (CSI 0x9b to an 8-bit terminal). Whole UTF-8
+// characters (Cyrillic ћ is D1 9B) are text.
 bool hasRawControl(const std::string& text) {
-    for (unsigned char c : text)
-        if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f || c == 0x9b) return true;
+    for (size_t i = 0; i < text.size();) {
+        const unsigned char c = static_cast<unsigned char>(text[i]);
+        if (c < 0x80) {
+            if ((c < 0x20 && c != '\n' && c != '\t') || c == 0x7f) return true;
+            ++i;
+            continue;
+        }
+        const size_t n = c >= 0xC2 && c <= 0xDF ? 2 : c >= 0xE0 && c <= 0xEF ? 3 : c >= 0xF0 && c <= 0xF4 ? 4 : 0;
+        bool whole = n > 0 && i + n <= text.size();
+        for (size_t k = 1; whole && k < n; ++k) whole = (static_cast<unsigned char>(text[i + k]) & 0xC0) == 0x80;
+        if (whole && c == 0xC2 && static_cast<unsigned char>(text[i + 1]) <= 0x9f) return true;  // C1
+        if (!whole && c <= 0x9f) return true;
+        i += whole ? n : 1;
+    }
     return false;
 }
 
@@ -249,6 +265,26 @@ TEST(CliHostileFourth, NamesAsWrittenAndHiddenHandInsSaid) {
     EXPECT_NE(csv.find("\nJ\xc3\xbcrgen Gro\xc3\x9f,100,pass,"), std::string::npos) << csv;
     EXPECT_EQ(countOf(r.err, "glimmer: warning: " + (cls / ".late").string() +
                                  ": skipped, its name starts with '.' (hidden); rename it to grade it\n"), 1) << r.err;
+}
+
+// 200 KB of random bytes as a script on standard input printed 53 raw 0x9b
+// bytes: now nothing of it reaches the terminal unescaped.
+TEST(CliHostileFourth, RandomBytesOnStandardInputPrintNoRawControl) {
+    TempDir dir;
+    std::string bytes;
+    unsigned x = 12345;
+    for (int k = 0; k < 200000; ++k) {
+        x = x * 1103515245u + 12345u;
+        bytes += char((x >> 16) & 0xff);
+    }
+    std::ofstream(dir.file("random.bin"), std::ios::binary) << bytes;
+    auto r = runGlimmerWithInput({"render", "-", "-o", dir.file("o.png"), "--size", "8x8", "--backend", "osmesa"},
+                                 dir.file("random.bin"));
+    EXPECT_FALSE(r.timedOut);
+    EXPECT_FALSE(hasRawControl(r.err)) << r.err.substr(0, 3000);
+    auto v = runGlimmerWithInput({"-v", "render", "-", "-o", dir.file("o.png"), "--size", "8x8", "--backend", "osmesa"},
+                                 dir.file("random.bin"));
+    EXPECT_FALSE(hasRawControl(v.err)) << v.err.substr(0, 3000);
 }
 
 }  // namespace
