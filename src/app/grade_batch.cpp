@@ -143,6 +143,9 @@ std::vector<std::string> pictureStems(const std::vector<Submission>& subs) {
     std::vector<std::string> names;
     for (const auto& s : subs) {
         std::string name = s.name;
+        // A folder named with spaces only was "script" (issue 37): said as what it is.
+        if (!name.empty() && name.find_first_not_of(' ') == std::string::npos)
+            name = fmt::format("({} space{})", name.size(), name.size() == 1 ? "" : "s");
         if (name.size() > kMaxStemBytes) {
             size_t cut = kMaxStemBytes;
             while (cut > 0 && (static_cast<unsigned char>(name[cut]) & 0xC0) == 0x80) --cut;

@@ -182,7 +182,7 @@ std::string feedbackHtml(const GradeRow& r, const std::string& solutionName, con
                                          alt, alt);
     };
     const std::string label = r.verdict == "error" && !r.notes.empty() ? "error: " + r.notes : r.verdict;
-    std::string out = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>Feedback: " + htmlEscape(r.student) +
+    std::string out = "<!DOCTYPE html>\n<html lang=en><head><meta charset=utf-8><title>Feedback: \u2068" + htmlEscape(r.student) + "\u2069" +
                       "</title>\n<style>\nh1{unicode-bidi:isolate}\nbody{font:15px/1.4 system-ui,sans-serif;margin:16px;color:#222;max-width:1100px}\n"
                       "h1{font-size:20px;margin:0 0 6px}\nfigure{display:inline-block;margin:0 8px 8px 0;vertical-align:top}\n"
                       "figure img{max-width:340px;image-rendering:pixelated;border:1px solid #ccc;display:block}\n"
@@ -190,7 +190,9 @@ std::string feedbackHtml(const GradeRow& r, const std::string& solutionName, con
                       "pre{background:#f6f6f6;padding:6px;white-space:pre-wrap}\n.comment{background:#eef;padding:6px}\n"
                       ".v{font-weight:bold;text-transform:uppercase}\nh2{font-size:16px;margin:14px 0 4px}\n"
                       "</style></head><body>\n";
-    out += "<h1>" + htmlEscape(r.student) + ": graded against " + htmlEscape(solutionName) + "</h1>\n";
+    // The name isolated (a title takes no markup: U+2068 FIRST STRONG
+    // ISOLATE ... U+2069), so a U+202E in it turns nothing around it (issue 37).
+    out += "<h1><bdi>" + htmlEscape(r.student) + "</bdi>: graded against " + htmlEscape(solutionName) + "</h1>\n";
     out += fmt::format("<p><span class=v>{}</span> · score {}{}</p>\n", htmlEscape(label), r.score,
                        r.computedScore >= 0 ? fmt::format(" (set by your teacher; computed {})", r.computedScore) : "");
     if (!r.comment.empty()) out += "<p class=comment>Your teacher: " + htmlEscape(r.comment) + "</p>\n";

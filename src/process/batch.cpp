@@ -391,7 +391,7 @@ std::vector<std::string> batchOutputNames(const std::vector<std::string>& script
         for (size_t k = 0; k < base.size();) {
             const unsigned char c = static_cast<unsigned char>(base[k]);
             bool plain = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '-' ||
-                         c == '_' || c == '.' || (keepSpaces && c == ' ');
+                         c == '_' || c == '.' || (keepSpaces && (c == ' ' || c == '(' || c == ')'));
             // A name keeps its letters as written in UTF-8 (Jürgen, 李雷: issue 29,
             // they were J__rgen and 'script'); a byte that is not part of a
             // whole UTF-8 character, or a C1 control (U+0080..U+009F), is '_'.

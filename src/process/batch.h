@@ -115,7 +115,8 @@ bool inShard(size_t index, int shard, int shards);
 // -> "class_alice_bloom.png"; letters beyond ASCII kept as written in UTF-8),
 // made unique with "-2", "-3", ... in list order.
 // With `keepSpaces` (grading's student names: "Jürgen Groß" as written,
-// issue 37) a space inside a name is kept; leading and trailing ones go.
+// issue 37) a space inside a name is kept, and parentheses; leading and
+// trailing spaces go.
 std::vector<std::string> batchOutputNames(const std::vector<std::string>& scripts, bool keepSpaces = false);
 
 }  // namespace glimmer

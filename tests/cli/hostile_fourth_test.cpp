@@ -257,12 +257,14 @@ TEST(CliHostileFourth, NamesAsWrittenAndHiddenHandInsSaid) {
     const fs::path cls = dir.path() / "class";
     copySolution(cls / "J\xc3\xbcrgen Gro\xc3\x9f");
     copySolution(cls / ".late");
+    copySolution(cls / "   ");
     auto r = runGlimmer({"batch", cls.string(), "--reference", (kSolution / "rings.glib").string(), "-o",
                          (dir.path() / "out").string(), "--size", "32x32", "--backend", "osmesa"},
                         120);
     EXPECT_EQ(r.exitCode, 0) << r.err;
     const std::string csv = readAll(dir.path() / "out" / "grades.csv");
     EXPECT_NE(csv.find("\nJ\xc3\xbcrgen Gro\xc3\x9f,100,pass,"), std::string::npos) << csv;
+    EXPECT_NE(csv.find("\n(3 spaces),100,pass,"), std::string::npos) << csv;  // was "script"
     EXPECT_EQ(countOf(r.err, "glimmer: warning: " + (cls / ".late").string() +
                                  ": skipped, its name starts with '.' (hidden); rename it to grade it\n"), 1) << r.err;
 }

@@ -87,6 +87,15 @@ TEST(GradeReport, CsvGuardsSpacesFullWidthSignsAndControlBytes) {
               "'\xef\xbc\x9d" "1+1,2,wrong,0.0000,0.00,0.00,,,,,\n");  // in name order, bytewise
 }
 
+// Issue 37: a right-to-left override (U+202E) in a folder name turned the
+// report around: every place a name stands is isolated.
+TEST(GradeReport, ANameIsIsolatedFromTheTextAroundIt) {
+    GradeRow r = row("evil\xe2\x80\xae" "gnp.exe", "pass", 100);
+    const std::string page = feedbackHtml(r, "rings.glib", {});
+    EXPECT_NE(page.find("<title>Feedback: \xe2\x81\xa8" "evil\xe2\x80\xae" "gnp.exe\xe2\x81\xa9"), std::string::npos) << page;
+    EXPECT_NE(page.find("<h1><bdi>evil\xe2\x80\xae" "gnp.exe</bdi>: graded against"), std::string::npos) << page;
+}
+
 // Issue 26: a student's name goes into attributes (the row's id, the glance
 // strip's link): a '"' in it must not end the attribute.
 // Issue 29: the teacher's overrides file. Scores replace the computed ones
