@@ -115,15 +115,26 @@ struct Placement {
 Placement placeCapture(std::string_view code, const Body& body, size_t lastChar, const std::string& capture) {
     size_t stmtStart = body.open + 1;
     bool controlBody = false, pendingControl = false, inHeader = false;
-    int paren = 0;
+    int paren = 0, depth = 0;
+    // A do's `while (...)` is the end of its statement, not a loop header
+    // with a body after it (issue 38: `do x += 0.5; while (x < 0.);` was
+    // watched as `while (x < 0.) { ; capture }`). doDepths: the brace depth
+    // of each do whose tail is still to come; afterDoBody: its body just
+    // ended, so a `while` now is that tail.
+    std::vector<int> doDepths;
+    bool afterDoBody = false;
     const size_t end = std::min(body.close, code.size());
     for (size_t i = body.open + 1; i < end; ++i) {
         char c = code[i];
         if (isGlslWordStart(c) && (i == 0 || !isGlslWordChar(code[i - 1]))) {
             std::string w = wordAt(code, i);
             if (paren == 0) {
-                if (w == "if" || w == "for" || w == "while" || w == "switch") pendingControl = true;
+                const bool doTail = afterDoBody && w == "while";
+                afterDoBody = false;
+                if (doTail) doDepths.pop_back();
+                else if (w == "if" || w == "for" || w == "while" || w == "switch") pendingControl = true;
                 if (w == "else" || w == "do") stmtStart = i + w.size(), controlBody = true;
+                if (w == "do") doDepths.push_back(depth);
             }
             i += w.size() - 1;
             continue;
@@ -140,6 +151,8 @@ Placement placeCapture(std::string_view code, const Body& body, size_t lastChar,
                 // closes: the value at its end (each pass of a loop).
                 return {true, "", {{c == '{' ? i + 1 : i, 0, capture}}};
             }
+            depth = c == '{' ? depth + 1 : std::max(0, depth - 1);
+            afterDoBody = c == '}' && !doDepths.empty() && depth == doDepths.back();
             stmtStart = i + 1, controlBody = false, pendingControl = false;
         } else if (paren == 0 && c == ';') {
             if (i >= lastChar) {
@@ -156,6 +169,7 @@ Placement placeCapture(std::string_view code, const Body& body, size_t lastChar,
                 if (controlBody) edits.push_back({i + 1, 0, " }"});
                 return {true, "", edits};
             }
+            afterDoBody = !doDepths.empty() && depth == doDepths.back() && controlBody;
             stmtStart = i + 1, controlBody = false, pendingControl = false;
         }
     }

@@ -53,6 +53,26 @@ TEST(WatchRewrite, AStatementOverSeveralLinesIsWatchedWhereItEnds) {
     EXPECT_EQ(watchedLine(src, 2, "a", 3), "     2.; glimmer_watch_store(a);");
 }
 
+// Issue 38: a do's `while (...)` ends its statement; it is no loop header
+// whose body gets braces. One line, its body a lone statement or a block.
+TEST(WatchRewrite, ADoWhileOnOneLineIsWatchedAfterItsWhile) {
+    EXPECT_EQ(watchedLine("void main() {\n  float x = 0.;\n  do x += 0.5; while (x < 0.);\n  gl_FragColor = vec4(x);\n}\n",
+                          3, "x", 3),
+              "  do x += 0.5; while (x < 0.); glimmer_watch_store(x);");
+    EXPECT_EQ(watchedLine("void main() {\n  float x = 0.;\n  do { x += 0.5; } while (x < 1.);\n  gl_FragColor = vec4(x);\n}\n",
+                          3, "x", 3),
+              "  do { x += 0.5; } while (x < 1.); glimmer_watch_store(x);");
+    // The body on its own line is still watched inside the loop, braced.
+    EXPECT_EQ(watchedLine("void main() {\n  float x = 0.;\n  do\n    x += 0.5;\n  while (x < 1.);\n  gl_FragColor = vec4(x);\n}\n",
+                          4, "x", 4),
+              "    { x += 0.5; glimmer_watch_store(x); }");
+    // A plain while after a finished do-while is a loop again.
+    EXPECT_EQ(watchedLine("void main() {\n  float x = 0.;\n  do x += 0.5; while (x < 0.);\n  while (x < 2.)\n    x += 1.;\n"
+                          "  gl_FragColor = vec4(x);\n}\n",
+                          5, "x", 5),
+              "    { x += 1.; glimmer_watch_store(x); }");
+}
+
 TEST(WatchRewrite, ALoneBodyOfAnIfOrLoopGetsBraces) {
     const char* src = "void main() {\n  float s = 0.;\n  for (int i = 0; i < 4; i++)\n    s += float(i);\n"
                       "  if (s > 1.) s = 1.;\n  gl_FragColor = vec4(s);\n}\n";
