@@ -515,7 +515,10 @@ int runView(const ViewOptions& o) {
     for (const auto& line : splitCommands(o.exec)) queue.push(line);
     if (o.readStdin) {
         std::thread([&queue] {
-            for (std::string line; std::getline(std::cin, line);) queue.push(line);
+            // A line may hold several commands, as --exec does (issue 39:
+            // `set uAdd 2; set uHalfSize 11` on one line was refused).
+            for (std::string line; std::getline(std::cin, line);)
+                for (const auto& part : splitCommands(line)) queue.push(part);
         }).detach();
     }
     Viewer viewer(o, *window, w, h);

@@ -89,6 +89,18 @@ TEST(Viewer, ExecRunsCommandsAndQuits) {
     EXPECT_EQ(readBytes(p.dir / "exec.png"), readBytes(p.dir / "render.png"));
 }
 
+// Issue 39: several commands on one line of standard input, as --exec takes
+// them (`set uAdd 2; set uHalfSize 11` was refused as one command).
+TEST(Viewer, OneStdinLineMayHoldSeveralCommands) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "256x256"}, p.dir);
+    v.send("set uHalfSize 5; set uAdd 3; save line.png");
+    ASSERT_TRUE(waitForFile(p.dir / "line.png")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
+    ASSERT_EQ(renderPng(p.dir / "bloom.glib", {"uHalfSize=5", "uAdd=3"}, p.dir / "render.png"), 0);
+    EXPECT_EQ(readBytes(p.dir / "line.png"), readBytes(p.dir / "render.png"));
+}
+
 // `save` never writes over one of the script's own files (issue 37: `save
 // bloom.frag` turned the shader into a PNG); a name it may use still saves.
 TEST(Viewer, SaveRefusesTheScriptsOwnFiles) {
