@@ -37,8 +37,8 @@ MUTANTS = [
       {"test_cli": "CliGrade.Resume*"}, "--resume with another --reference resumes and mixes two gradings",
       listed=True),
     M("csv.plus-is-a-formula", "src/grade/grade_report.cpp",
-      "(text[0] == '=' || text[0] == '+' || text[0] == '-' || text[0] == '@')",
-      "(text[0] == '=' || text[0] == '-' || text[0] == '@')",
+      "if (c == '=' || c == '+' || c == '-' || c == '@') return true;",
+      "if (c == '=' || c == '-' || c == '@') return true;",
       GRADE, "the CSV guard stops quoting cells that start with '+'", listed=True),
     M("html.escape-quote", "src/grade/grade_report.cpp",
       "case '\"': out += \"&quot;\"; break;",
@@ -163,8 +163,8 @@ MUTANTS = [
       "const std::string label = r.verdict;",
       GRADE, "every error row says only 'error' again (issue 29)"),
     M("batch.timeout-ms", "src/process/batch.cpp",
-      "s.timeoutSeconds, s.timeoutSeconds), ms);",
-      "s.timeoutSeconds, s.timeoutSeconds), 0);",
+      "stoppedWhile(job, phase)),\n                       ms);",
+      "stoppedWhile(job, phase)),\n                       0);",
       {"test_cli": "CliGrade.EachKind*"}, "a timed-out submission's time is 0.00 s again (issue 29)"),
 
     # ---- src/pipeline, src/process ----
