@@ -422,7 +422,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         for (size_t k = 0; k < settings.size(); ++k) {
             Image student;
             std::string why;
-            if (loadImage(result.written[k], student, why) && comparePictures(student, solutionPictures[k]).blank)
+            if (loadImage(result.written[k], student, why) && blankAgainst(student, solutionPictures[k]))
                 return true;
         }
         return false;

@@ -80,16 +80,23 @@ bool oneColour(const Image& p) {
     return true;
 }
 
+bool comparable(const Image& student, const Image& solution) {
+    return student.width == solution.width && student.height == solution.height && student.type == Image::Type::U8 &&
+           solution.type == Image::Type::U8 && !student.empty();
+}
+
 }  // namespace
+
+bool blankAgainst(const Image& student, const Image& solution) {
+    return comparable(student, solution) && oneColour(student) && !oneColour(solution);
+}
 
 Comparison comparePictures(const Image& student, const Image& solution) {
     Comparison c;
-    if (student.width != solution.width || student.height != solution.height || student.type != Image::Type::U8 ||
-        solution.type != Image::Type::U8 || student.empty())
-        return c;
+    if (!comparable(student, solution)) return c;
     c.psnr = compare(rgbOf(student), rgbOf(solution)).psnr;
     c.ssim = ssim(luma(student), luma(solution), student.width, student.height, 8);
-    c.blank = oneColour(student) && !oneColour(solution);
+    c.blank = blankAgainst(student, solution);
     // The local measures: pixels clearly off, and the worst tile.
     size_t off = 0;
     const size_t n = size_t(student.width) * size_t(student.height);

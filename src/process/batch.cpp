@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <deque>
 #include <set>
 
@@ -17,7 +16,6 @@
 #include "process/batch_worker.h"
 #include "process/child_guard.h"
 #include "util/json.h"
-
 
 namespace glimmer {
 namespace {
@@ -211,6 +209,13 @@ private:
         if (progress_) progress_(finished_, jobs_.size());
     }
 
+    // The job's one second drawing: next, alone, in a fresh worker.
+    void drawAgainAlone(size_t job) {
+        state_[job].retried = true;
+        state_[job].alone = true;
+        queue_.push_front(job);
+    }
+
     // A job the machine failed: drawn again alone, once; then final. Once a
     // lone worker could not make a context either, no later job waits for
     // a second try of that (the backend is missing, not busy).
@@ -218,9 +223,7 @@ private:
         const bool noContext = r.failure.rfind(kNoContext, 0) == 0;
         if (state_[job].retried && noContext) contextMissing_ = true;
         if (!state_[job].retried && !(noContext && contextMissing_)) {
-            state_[job].retried = true;
-            state_[job].alone = true;
-            queue_.push_front(job);
+            drawAgainAlone(job);
             return;
         }
         if (state_[job].retried) {
@@ -292,9 +295,7 @@ private:
             return;
         }
         if (s_.recheck && !state_[size_t(job)].retried && s_.recheck(size_t(job), got)) {
-            state_[size_t(job)].retried = true;
-            state_[size_t(job)].alone = true;
-            queue_.push_front(size_t(job));
+            drawAgainAlone(size_t(job));
             return;
         }
         finish(size_t(job), std::move(got));
@@ -304,7 +305,6 @@ private:
         if (w.job < 0) return;
         const BatchJob& job = jobs_[size_t(w.job)];
         double limit = s_.contextSeconds;
-        std::string said = "making the GL context";
         if (w.begun) {
             // The limit now: the whole job's, or (grading) that of the setting it is drawing.
             limit = s_.timeoutSeconds;
