@@ -21,13 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using glimmer_cli::countOf;
+using glimmer_cli::readAll;
 using glimmer_cli::runGlimmer;
 using glimmer_cli::TempDir;
-
-std::string readAll(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-}
 
 // Sets GLIMMER_TEST_FAULT for the glimmer processes this test starts.
 struct Fault {

@@ -18,14 +18,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using glimmer_cli::countOf;
+using glimmer_cli::readAll;
 using glimmer_cli::runGlimmer;
 using glimmer_cli::TempDir;
 using glimmer_cli::writeRunawayScript;
-
-std::string readAll(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-}
 
 // One line of --report, read with a JSON library (an empty object when it
 // is not a JSON object: the checks on it then fail, saying the line).

@@ -23,15 +23,11 @@ namespace {
 
 namespace fs = std::filesystem;
 using glimmer_cli::countOf;
+using glimmer_cli::readAll;
 using glimmer_cli::runGlimmer;
 using glimmer_cli::TempDir;
 
 const fs::path kSolution = fs::path(GLIMMER_TEST_DATA) / "grading" / "solution";
-
-std::string readAll(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    return std::string((std::istreambuf_iterator<char>(f)), std::istreambuf_iterator<char>());
-}
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
     auto at = text.find(from);

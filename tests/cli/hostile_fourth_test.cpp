@@ -17,11 +17,6 @@ namespace glimmer_cli {
 namespace {
 namespace fs = std::filesystem;
 
-std::string readAll(const fs::path& path) {
-    std::ifstream f(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
 const fs::path kSolution = fs::path(GLIMMER_TEST_DATA) / "grading" / "solution";
 
 void copySolution(const fs::path& to, const std::string& frag = "") {

@@ -20,11 +20,6 @@ namespace glimmer_cli {
 namespace {
 namespace fs = std::filesystem;
 
-std::string readAll(const std::string& path) {
-    std::ifstream f(path, std::ios::binary);
-    return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
-}
-
 // A script drawing one quad with `frag` (and plain.vert) from `dir`.
 std::string quadScript(const TempDir& dir, const std::string& fragText) {
     fs::copy_file(std::string(GLIMMER_SOURCE_DIR) + "/" + cliData("plain.vert"), dir.file("plain.vert"));

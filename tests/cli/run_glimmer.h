@@ -60,6 +60,9 @@ bool readPngSize(const std::string& path, unsigned& width, unsigned& height);
 // How many times `needle` occurs in `haystack`.
 int countOf(const std::string& haystack, const std::string& needle);
 
+// The whole of a file as bytes ("" when it cannot be read).
+std::string readAll(const std::filesystem::path& path);
+
 // `glimmer check SCRIPT --backend osmesa EXTRA...`.
 RunResult checkOnOsmesa(const std::string& script, const std::vector<std::string>& extra = {});
 
