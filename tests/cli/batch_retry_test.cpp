@@ -22,6 +22,7 @@ namespace {
 namespace fs = std::filesystem;
 using glimmer_cli::countOf;
 using glimmer_cli::readAll;
+using glimmer_cli::writeSolid;
 using glimmer_cli::runGlimmer;
 using glimmer_cli::TempDir;
 
@@ -30,12 +31,6 @@ struct Fault {
     explicit Fault(const std::string& spec) { ::setenv("GLIMMER_TEST_FAULT", spec.c_str(), 1); }
     ~Fault() { ::unsetenv("GLIMMER_TEST_FAULT"); }
 };
-
-std::string writeSolid(const TempDir& dir, const std::string& name, int k) {
-    std::ofstream(dir.file(name)) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nColor " << (k % 3 == 0) << " "
-                                  << (k % 3 == 1) << " " << (k % 3 == 2) << "\nQuadXY 0 1\n";
-    return dir.file(name);
-}
 
 // The PNG batch wrote for the script named `stem` (batch names it after the
 // whole path), or "" when there is none.

@@ -19,6 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 using glimmer_cli::countOf;
 using glimmer_cli::readAll;
+using glimmer_cli::writeSolid;
 using glimmer_cli::runGlimmer;
 using glimmer_cli::TempDir;
 using glimmer_cli::writeRunawayScript;
@@ -35,13 +36,6 @@ std::vector<std::string> lines(const std::string& text) {
     std::istringstream in(text);
     for (std::string l; std::getline(in, l);) out.push_back(l);
     return out;
-}
-
-// A small script that draws a colour given by its number, so every PNG differs.
-std::string writeSolid(const TempDir& dir, const std::string& name, int k) {
-    std::ofstream(dir.file(name)) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nColor " << (k % 3 == 0)
-                                  << " " << (k % 3 == 1) << " " << (k % 3 == 2) << "\nQuadXY 0 1\n";
-    return dir.file(name);
 }
 
 TEST(CliBatch, EachScriptIsRenderedOrReportedAndARunawayCostsOnlyItself) {

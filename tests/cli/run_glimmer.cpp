@@ -204,6 +204,12 @@ glimmer::Image loadPicture(const std::string& path) {
     return img;
 }
 
+std::string writeSolid(const TempDir& dir, const std::string& name, int k) {
+    std::ofstream(dir.file(name)) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nColor " << (k % 3 == 0) << " "
+                                  << (k % 3 == 1) << " " << (k % 3 == 2) << "\nQuadXY 0 1\n";
+    return dir.file(name);
+}
+
 std::string readAll(const std::filesystem::path& path) {
     std::ifstream f(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};

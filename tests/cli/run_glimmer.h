@@ -60,6 +60,10 @@ bool readPngSize(const std::string& path, unsigned& width, unsigned& height);
 // How many times `needle` occurs in `haystack`.
 int countOf(const std::string& haystack, const std::string& needle);
 
+// A small script in `dir` that draws a colour picked by `k` (red, green,
+// blue in turn), so scripts with different k give different PNGs.
+std::string writeSolid(const TempDir& dir, const std::string& name, int k);
+
 // The whole of a file as bytes ("" when it cannot be read).
 std::string readAll(const std::filesystem::path& path);
 
