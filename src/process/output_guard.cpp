@@ -44,12 +44,11 @@ std::string notAFileToWrite(const std::string& file) {
     return {};
 }
 
-std::string overwritesAnInput(const Plan& plan, const std::string& option, const std::string& file,
-                              const std::string& what, int frames) {
+std::string outputRefusal(const Plan& plan, const std::string& option, const std::string& file, const std::string& what,
+                          int frames) {
     const std::string shown = sanitizeForTerminal(file, false);  // a name may hold ESC (issue 37)
     if (const std::string special = notAFileToWrite(file); !special.empty())
-        return "glimmer: error: " + option + " " + shown + ": that is " + special + "; write the " + what +
-               " to a file\n";
+        return option + " " + shown + ": that is " + special + "; write the " + what + " to a file";
     // A frame pattern: every name it makes, and the name as written.
     std::vector<std::string> names = {file};
     if (isFramePattern(file))
@@ -60,10 +59,16 @@ std::string overwritesAnInput(const Plan& plan, const std::string& option, const
     for (const std::string& name : names) {
         const std::string input = inputOverwrittenBy(plan, name);
         if (!input.empty())
-            return "glimmer: error: " + option + " " + shown + ": that is '" + sanitizeForTerminal(input, false) +
-                   "', which the script reads; write the " + what + " under another name\n";
+            return option + " " + shown + ": that is '" + sanitizeForTerminal(input, false) +
+                   "', which the script reads; write the " + what + " under another name";
     }
     return {};
+}
+
+std::string overwritesAnInput(const Plan& plan, const std::string& option, const std::string& file,
+                              const std::string& what, int frames) {
+    const std::string why = outputRefusal(plan, option, file, what, frames);
+    return why.empty() ? why : "glimmer: error: " + why + "\n";
 }
 
 }  // namespace glimmer

@@ -25,6 +25,12 @@ std::string inputOverwrittenBy(const Plan& plan, const std::string& output);
 std::string overwritesAnInput(const Plan& plan, const std::string& option, const std::string& file,
                               const std::string& what, int frames = 1);
 
+// The same refusal as the message's text alone ("save f.frag: that is
+// 'f.frag', which ..."), for a front end that words it itself (view's status
+// line); "" when `file` may be written.
+std::string outputRefusal(const Plan& plan, const std::string& option, const std::string& file, const std::string& what,
+                          int frames = 1);
+
 // Why `file` is no file to write a picture to ("a FIFO ...", "under /dev/,
 // not a file"), or "" when it may be one.
 std::string notAFileToWrite(const std::string& file);

@@ -434,9 +434,8 @@ private:
         // frame may be under way: what is saved is the finished picture.
         // Never over one of the script's own files (issue 37: `save
         // bright.frag` turned the shader into a PNG).
-        if (std::string refusal = overwritesAnInput(s_.good->plan, "save", file, "picture"); !refusal.empty()) {
-            s_.status = sanitizeForTerminal(refusal.substr(std::string("glimmer: error: ").size()), true);
-            if (!s_.status.empty() && s_.status.back() == '\n') s_.status.pop_back();
+        if (std::string refusal = outputRefusal(s_.good->plan, "save", file, "picture"); !refusal.empty()) {
+            s_.status = refusal;
             std::cerr << "glimmer view: " << s_.status << "\n";
             return;
         }
