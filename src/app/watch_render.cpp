@@ -69,17 +69,18 @@ int runRenderWatch(const RenderOptions& o, Session& s) {
     if (auto code = startWatchOption(o.watch, s, watch)) return *code;
     if (!o.watchRange.empty()) watch.range = range;
     WatchFrame frame = drawWatch(*s.renderer, watch, *s.values, o.time);
-    if (frame.picture.empty()) {
+    if (!frame.drawn) {
         std::cerr << "glimmer: error: --watch: the driver cannot draw into a float target (RGBA32F)\n";
         return kExitScriptError;
     }
     const bool floats = !endsWith(o.output, ".png");
-    if (!writeImage(o.output, floats ? frame.capture.value : frame.picture, why)) {
+    const Image written = floats ? s.renderer->readWatchCapture().value : s.renderer->readWatchPicture();
+    if (!writeImage(o.output, written, why)) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;
     }
     std::cout << "watch " << watchTitle(watch, s.loaded.plan) << ": " << watchSummary(frame.stats) << "\n";
-    reportWrote(fmt::format("{} ({}x{}, {})", o.output, frame.picture.width, frame.picture.height,
+    reportWrote(fmt::format("{} ({}x{}, {})", o.output, written.width, written.height,
                             floats ? "the float values" : "the watch's picture"));
     return kExitOk;
 }

@@ -197,6 +197,8 @@ struct WatchFigure {
     std::string spec;
     double draw = 0, frame = 0;
     double alone = 0;  // the watched pass alone, its feeding passes kept (the viewer after a uAdd change)
+    double readBack = 0;  // frame, then its floats and picture read back whole (what render --watch and a save add)
+    double capture = 0, count = 0, colour = 0;  // the parts of `alone`
 };
 std::vector<WatchFigure> benchWatches(Renderer& r, const Plan& plan, const UniformValues& v, const GlApi& gl, int repeat) {
     std::vector<WatchFigure> out;
@@ -208,9 +210,15 @@ std::vector<WatchFigure> benchWatches(Renderer& r, const Plan& plan, const Unifo
         if (!parseWatchSpec(text, spec, why) || !startWatch(spec, plan, r, d, w)) continue;
         WatchFigure f{text};
         f.draw = timed(gl, false, repeat, [&] { r.renderWatch(w.pass, v, 0, w.feeding); });
+        f.readBack = timed(gl, false, repeat, [&] { drawWatch(r, w, v, 0); r.readWatchCapture(); r.readWatchPicture(); });
         f.frame = timed(gl, false, repeat, [&] { drawWatch(r, w, v, 0); });
         const std::vector<bool> none(plan.passes.size(), false);
         f.alone = timed(gl, false, repeat, [&] { drawWatch(r, w, v, 0, &none); });
+        // Its parts, each waited for: the watched pass into its float targets, the
+        // GPU's counting (and the read-back of the counts), the colouring.
+        f.capture = timed(gl, false, repeat, [&] { r.renderWatch(w.pass, v, 0, none); });
+        f.count = timed(gl, false, repeat, [&] { r.sumWatch(0, 1); });
+        f.colour = timed(gl, false, repeat, [&] { r.colourWatch(0, 1, 1, {}); });
         out.push_back(f);
     }
     r.dropWatch();
@@ -222,7 +230,8 @@ int benchBackend(const Options& o, const std::string& backendName) {
     if (!parseBackend(backendName, choice)) return 2;
     std::vector<double> startup, compile, render, write, loadMs;
     std::map<int, std::vector<double>> passTimes;
-    double fullFrame = 0, addChange = 0, slicedFrame = 0, wholeWall = 0;
+    double fullFrame = 0, addChange = 0, addChangeWall = 0, slicedFrame = 0, wholeWall = 0;
+    std::map<std::string, std::vector<double>> prepareSteps;
     std::vector<WatchFigure> watches;
     int slicesPerFrame = 0;
     bool gpu = false;  // time with GPU timer queries (a GPU) or glFinish and a wall clock
@@ -252,9 +261,9 @@ int benchBackend(const Options& o, const std::string& backendName) {
             return 1;
         }
         auto r = Renderer::create([&](const char* n) { return ctx->getProcAddress(n); }, why);
-        GlApi timerGl;  // the bench's own table, for timer queries around the renderer's work
-        loadGlApi(timerGl, [&](const char* n) { return ctx->getProcAddress(n); }, why);
         double tStart = msSince(t0);
+        GlApi timerGl;  // the bench's own table, for timer queries around the renderer's work: not Glimmer's start-up
+        loadGlApi(timerGl, [&](const char* n) { return ctx->getProcAddress(n); }, why);
         auto t1 = Clock::now();
         Diagnostics d;
         LoadedScript run = loaded;  // the files are read each time, as `glimmer render` does
@@ -264,6 +273,8 @@ int benchBackend(const Options& o, const std::string& backendName) {
         uploadScript(*r, run, false, d);
         r->finish();
         double tCompile = msSince(t1b);
+        if (i > 0)
+            for (const auto& [step, ms] : r->prepareSteps()) prepareSteps[step].push_back(ms);
         auto t2 = Clock::now();
         r->render(values, 0);
         r->finish();
@@ -307,6 +318,10 @@ int benchBackend(const Options& o, const std::string& backendName) {
                 watches = benchWatches(*r, loaded.plan, v, timerGl, o.repeat);
                 int k = 0;
                 addChange = timed(timerGl, r->gpuTimers(), o.repeat, [&] {
+                    v.set(bloom, "uAdd", {(k++ % 2) ? 1.0 : 3.0});
+                    r->render(v, 0, nullptr, &only);
+                });
+                addChangeWall = timed(timerGl, false, o.repeat, [&] {  // as the watch's, which waits for its counts
                     v.set(bloom, "uAdd", {(k++ % 2) ? 1.0 : 3.0});
                     r->render(v, 0, nullptr, &only);
                 });
@@ -376,6 +391,9 @@ int benchBackend(const Options& o, const std::string& backendName) {
     fmt::print("{:<28}{:>12.2f}   (CPU: read and decode files; not in either figure below)\n", "load files",
                median(loadMs));
     row("compile (upload, link)", median(compile), median(hwCompile));
+    for (const char* step : {"textures", "meshes", "programs", "checks", "targets"})
+        if (prepareSteps.count(step))
+            fmt::print("  {:<26}{:>12.2f}   (wall clock, no glFinish)\n", step, median(prepareSteps[step]));
     row("first frame (both passes)", mRender, median(hwFirst));
     std::error_code sizeError;
     fmt::print("{:<28}{:>12.2f}   PNG level {}, {} bytes\n", "write (read back, PNG)", median(write), o.pngLevel,
@@ -394,14 +412,17 @@ int benchBackend(const Options& o, const std::string& backendName) {
         fmt::print("{:<28}{:>12.2f}   whole frame {:.2f} ms (wall clock): {:.2f}x, in {} slices of {:g} ms (what view draws)\n",
                    "sliced frame", slicedFrame, wholeWall, slicedFrame / wholeWall, slicesPerFrame, o.sliceMs);
     for (const auto& w : watches)
-        fmt::print("{:<28}{:>12.2f}   whole frame {:.2f} ms (wall clock): {:.2f}x; draw alone {:.2f} ms ({:.2f}x), the "
-                   "rest read-back, range and picture\n",
+        fmt::print("{:<28}{:>12.2f}   whole frame {:.2f} ms (wall clock): {:.2f}x; the draw alone {:.2f} ms ({:.2f}x), "
+                   "the rest counting and colouring on the GPU; with the floats and picture read back {:.2f} ms\n",
                    "watch " + w.spec.substr(0, w.spec.find(':')), w.frame, wholeWall, w.frame / wholeWall, w.draw,
-                   w.draw / wholeWall);
+                   w.draw / wholeWall, w.readBack);
     for (const auto& w : watches)
         if (w.spec.rfind("bloom", 0) == 0)
-            fmt::print("{:<28}{:>12.2f}   the watched pass alone, the blur kept (what view draws when uAdd moves)\n",
-                       "watch bloom.frag, uAdd", w.alone);
+            fmt::print("{:<28}{:>12.2f}   the watched pass alone, the blur kept (what view draws when uAdd moves): "
+                       "{:.2f}x the uAdd change without a watch ({:.2f} ms, wall clock); of it the pass into its "
+                       "float targets {:.2f} ms ({:.2f}x), counting {:.2f} ms, colouring {:.2f} ms\n",
+                       "watch bloom.frag, uAdd", w.alone, addChangeWall > 0 ? w.alone / addChangeWall : 0., addChangeWall,
+                       w.capture, addChangeWall > 0 ? w.capture / addChangeWall : 0., w.count, w.colour);
     fmt::print("{:<28}{:>12.2f}   (full-screen texture copy, {}x{})\n", "copy pass", copy, o.size, o.size);
     fmt::print("{:<28}{:>12.1f}   blur pass / copy pass\n", "blur in copies", hwBlur / copy);
     fmt::print("{:<28}{:>12.1f}   bloom pass / copy pass\n", "bloom in copies", hwBloom / copy);

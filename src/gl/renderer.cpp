@@ -33,6 +33,9 @@ std::unique_ptr<Renderer> Renderer::create(const GetProcAddress& getProc, std::s
 
 Renderer::~Renderer() {
     releaseAll();
+    if (watchGpu_)
+        for (unsigned p : {watchGpu_->leaf, watchGpu_->merge, watchGpu_->colour})
+            if (p) gl_->DeleteProgram(p);
     for (auto* cache : {&noise2_, &noise3_})
         for (auto& [res, id] : *cache) gl_->DeleteTextures(1, &id);
 }

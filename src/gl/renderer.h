@@ -2,6 +2,7 @@
 // check, view, bench) drives a Renderer; every backend only hands it a
 // function that finds GL entry points. It owns every GL object it makes.
 #pragma once
+#include <array>
 #include <chrono>
 #include <functional>
 #include <map>
@@ -60,6 +61,16 @@ struct WatchCapture {
     Image info;
 };
 
+// What a watch's floats hold, counted on the GPU without reading them back
+// (gl/watch_gpu.cpp): the numbers pipeline/watch_picture.h's watchStats
+// computes on the CPU from a WatchCapture, which the tests hold these to.
+struct WatchSums {
+    int width = 0, height = 0;
+    std::array<float, 4> lo{}, hi{};  // per component over its finite values; lo > hi: it has none
+    long long drawn = 0, reached = 0, nan = 0, inf = 0, below = 0, above = 0;
+    int components = 0, kind = 0;  // the most components seen, the largest kind
+};
+
 class Renderer {
 public:
     // Loads the GL table through `getProc`; null and `error` when the driver
@@ -76,10 +87,26 @@ public:
     bool prepareWatch(int program, const std::map<size_t, std::string>& replaced, Diagnostics& diags);
     void dropWatch();
     // Draws the passes flagged in `feeding` as render() does, then `pass`
-    // into two float targets of its size: the watched program's draws with
-    // the watch's program, every other draw with colour writes off (it still
-    // hides what lies behind it). An empty capture without a watch.
-    WatchCapture renderWatch(int pass, const UniformValues& values, double time, const std::vector<bool>& feeding);
+    // into the watch's two float targets of its size, which stay on the GPU
+    // for the calls below: the watched program's draws with the watch's
+    // program, every other draw with colour writes off (it still hides what
+    // lies behind it). False without a watch, or when the driver cannot
+    // draw into float targets.
+    bool renderWatch(int pass, const UniformValues& values, double time, const std::vector<bool>& feeding);
+    // The drawn watch counted on the GPU (reductions; only a few hundred
+    // bytes come back): a pixel counts as below or above when a component
+    // is under `lo` or over `hi`. Empty when nothing is drawn.
+    std::optional<WatchSums> sumWatch(float lo, float hi);
+    // The watch's picture (pipeline/watch_picture.h says what it shows) drawn
+    // on the GPU into texture kUploadedPicture, with the range lo..hi, its
+    // scale (t = (v - lo) x scale; 0: mid grey) and the six marker colours
+    // (NaN, Inf, below, above, not run, not drawn).
+    void colourWatch(float lo, float hi, float scale, const std::array<std::array<unsigned char, 3>, 6>& marks);
+    // Read back when wanted: the picture colourWatch drew (RGBA8, row 0 at
+    // the top), and the floats of the rectangle x, y, w x h (row 0 at the
+    // top) of the drawn watch, or all of it. Empty when not drawn.
+    Image readWatchPicture() const;
+    WatchCapture readWatchCapture(int x = 0, int y = 0, int w = -1, int h = -1) const;
     // Each stage's text of `program` as prepare() compiled it (empty when it
     // was not built): what a watch rewrites.
     std::vector<std::optional<std::string>> programTexts(int program) const;
@@ -96,6 +123,8 @@ public:
     // `assets.used` marks. Returns false when diags got errors; the renderer
     // then draws nothing. Front ends reach this through pipeline/prepare_script.h.
     bool prepare(const Plan& plan, const Assets& assets, Diagnostics& diags, bool everything = false);
+    // The last prepare's steps and the wall clock of each, in ms (glimmer-bench).
+    const std::vector<std::pair<std::string, double>>& prepareSteps() const { return prepareSteps_; }
 
     // Draws every needed pass with these uniform values, or only the passes
     // flagged in `only` (see plan/dependencies.h); the others keep what they
@@ -127,10 +156,9 @@ public:
     // pass is drawing (--timeout names it; process/watchdog.h).
     void setPassListener(std::function<void(int pass)> listener) { passListener_ = std::move(listener); }
 
-    // A picture made on the CPU (a watch's, RGBA8, row 0 at the top), shown
-    // by present and presentIn as texture kUploadedPicture.
+    // The watch's picture (colourWatch), shown by present and presentIn as
+    // this texture.
     static constexpr int kUploadedPicture = -2;
-    void uploadPicture(const Image& picture);
 
     // Copies the screen (texture -1) or a texture target to the window's
     // framebuffer 0, scaled to fit inside w x h and centred.
@@ -245,10 +273,20 @@ private:
     std::unique_ptr<Program> watch_;  // the watched program, rewritten (prepareWatch)
     int watchedProgram_ = -1;         // which of programs_ it stands in for
     std::unique_ptr<Target> screen_;
-    std::unique_ptr<Target> uploaded_;  // uploadPicture's
+    std::unique_ptr<Target> uploaded_;  // colourWatch's picture
     unsigned uploadedTexture_ = 0;
+    // The watch's float targets and the GPU's programs that count and colour
+    // them (gl/watch_gpu.cpp); the targets go with the watch, the programs
+    // stay for the renderer's life.
+    struct WatchGpu;
+    std::unique_ptr<WatchGpu> watchGpu_;
+    void dropWatchTargets();
+    // The watch's float targets at this size (made again only when it
+    // changes), bound for drawing; false when the driver cannot draw into them.
+    bool bindWatchTargets(int width, int height, bool depth);
     glm::mat4 scene_{1.f};
     std::function<void(int)> passListener_;
+    std::vector<std::pair<std::string, double>> prepareSteps_;
     std::vector<double> msPerRow_;  // per pass: the wall clock a row of it took in its last band (0: not yet)
     mutable int gpuTimers_ = -1;  // -1: not asked yet
     unsigned screenTexture_ = 0;

@@ -32,6 +32,24 @@ struct Renderer::Target {
     int width = 0, height = 0;
 };
 
+// The watch on the GPU (gl/watch_gpu.cpp): the two float targets the
+// watched pass draws into, the levels of the reduction that counts them,
+// and the three programs that reduce and colour.
+struct Renderer::WatchGpu {
+    unsigned fbo = 0, depth = 0;
+    unsigned textures[2] = {0, 0};  // the value, what is known of it (WatchCapture)
+    int width = 0, height = 0;
+    bool drawn = false;  // renderWatch drew into them since they were made
+    struct Level {       // lo, hi (RGBA32F), counts, more counts (RGBA32UI) per block
+        unsigned fbo = 0;
+        unsigned textures[4] = {0, 0, 0, 0};
+        int width = 0, height = 0;
+    };
+    std::vector<Level> levels;
+    unsigned leaf = 0, merge = 0, colour = 0;  // made on first use, kept for the renderer's life
+    bool built = false;                        // tried to build them
+};
+
 struct Renderer::Program {
     unsigned id = 0;
     std::vector<ActiveUniform> uniforms;

@@ -25,14 +25,27 @@ bool Renderer::prepare(const Plan& plan, const Assets& assets, Diagnostics& diag
     meshes_.resize(plan.meshes.size());
     programs_.resize(plan.programs.size());
     int errorsBefore = diags.errorCount();
+    // Each step's wall clock, for glimmer-bench (no glFinish: a step's GPU
+    // work may finish during the next).
+    prepareSteps_.clear();
+    auto mark = [this, at = std::chrono::steady_clock::now()](const char* step) mutable {
+        const auto now = std::chrono::steady_clock::now();
+        prepareSteps_.push_back({step, std::chrono::duration<double, std::milli>(now - at).count()});
+        at = now;
+    };
     uploadTextures(plan, assets);
     if (!gl_->es) gl_->Enable(GL_TEXTURE_CUBE_MAP_SEAMLESS);  // ES 3.0: always seamless, and no such enum
+    mark("textures");
     uploadMeshes(plan, assets);
+    mark("meshes");
     buildPrograms(*plan_, assets, diags);  // its settings point into the kept copy, which outlives the caller's
+    mark("programs");
     warnSamplerKinds(plan, everything, diags);
     warnUndrawable(plan, everything, diags);
+    mark("checks");
     makeTargets(plan, everything, diags);
     makeScreen(plan, diags);
+    mark("targets");
     // A GL error with no error said yet; after one (a target the driver
     // cannot render into) it only follows from it.
     if (GLenum e = gl_->GetError(); e != GL_NO_ERROR && diags.errorCount() == errorsBefore)

@@ -1,6 +1,8 @@
 #include "pipeline/watch.h"
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fmt/format.h>
 
@@ -159,10 +161,36 @@ bool startWatch(const WatchSpec& spec, const Plan& plan, Renderer& renderer, Dia
 WatchFrame drawWatch(Renderer& renderer, const Watch& watch, const UniformValues& values, double time,
                      const std::vector<bool>* feeding) {
     WatchFrame f;
-    f.capture = renderer.renderWatch(watch.pass, values, time, feeding ? *feeding : watch.feeding);
-    f.stats = watchStats(f.capture.value, f.capture.info, watch.range);
-    f.picture = watchPicture(f.capture.value, f.capture.info, f.stats);
+    if (!renderer.renderWatch(watch.pass, values, time, feeding ? *feeding : watch.feeding)) return f;
+    // Below and above the fixed range; the values' own has nothing outside it.
+    const float most = std::numeric_limits<float>::max();
+    std::optional<WatchSums> sums = watch.range ? renderer.sumWatch(float(watch.range->lo), float(watch.range->hi))
+                                                : renderer.sumWatch(-most, most);
+    if (!sums) return f;
+    WatchStats& s = f.stats;
+    s.width = sums->width, s.height = sums->height;
+    s.components = std::clamp(sums->components, 0, 4);
+    s.kind = sums->kind;
+    for (size_t c = 0; c < 4; ++c) {  // none finite: as watchStats leaves it
+        const bool any = sums->lo[c] <= sums->hi[c];
+        s.lo[c] = any ? sums->lo[c] : std::numeric_limits<double>::infinity();
+        s.hi[c] = any ? sums->hi[c] : -std::numeric_limits<double>::infinity();
+    }
+    s.drawn = sums->drawn, s.reached = sums->reached, s.nan = sums->nan, s.inf = sums->inf;
+    s.below = sums->below, s.above = sums->above;
+    s.fixed = watch.range.has_value();
+    s.range = watchRangeOf(s, watch.range);
+    std::array<std::array<unsigned char, 3>, 6> marks{};
+    for (size_t m = 0; m < 6; ++m) marks[m] = {kWatchMarkers[m].r, kWatchMarkers[m].g, kWatchMarkers[m].b};
+    renderer.colourWatch(float(s.range.lo), float(s.range.hi), watchScale(float(s.range.lo), float(s.range.hi)), marks);
+    f.drawn = true;
     return f;
+}
+
+std::string watchValueAt(const Renderer& renderer, int x, int y) {
+    WatchCapture one = renderer.readWatchCapture(x, y, 1, 1);
+    if (one.value.empty()) return "outside the pass";
+    return watchValueAt(one.value, one.info, 0, 0);
 }
 
 std::string watchTitle(const Watch& watch, const Plan& plan) {

@@ -7,7 +7,9 @@
 //   -> the stage rewritten (shader/watch_rewrite.h; a vertex watch rewrites
 //     the program's fragment stage too) -> built on the renderer (prepareWatch)
 //   -> drawn: the passes that feed it, then it, into float targets
-//     (Renderer::renderWatch) -> its statistics and picture (metrics/watch_picture.h)
+//     (Renderer::renderWatch) -> counted and coloured on the GPU
+//     (gl/watch_gpu.cpp; what they mean: pipeline/watch_picture.h), the
+//     floats read back only when asked for
 //
 // Every refusal is a diagnostic, at the watched line where there is one:
 // file:line:col: error: ..., with the reason in the user's terms (not in
@@ -18,7 +20,7 @@
 #include <vector>
 
 #include "gl/renderer.h"
-#include "metrics/watch_picture.h"
+#include "pipeline/watch_picture.h"
 #include "plan/plan.h"
 #include "shader/watch_rewrite.h"
 
@@ -40,14 +42,20 @@ struct Watch {
 bool startWatch(const WatchSpec& spec, const Plan& plan, Renderer& renderer, Diagnostics& diags, Watch& out);
 
 struct WatchFrame {
-    WatchCapture capture;
+    bool drawn = false;  // false when the driver cannot draw into float targets
     WatchStats stats;
-    Image picture;  // RGBA8, row 0 at the top; empty when the driver cannot draw float targets
+    // The picture is in the renderer's texture Renderer::kUploadedPicture;
+    // Renderer::readWatchPicture and readWatchCapture read it and the floats back.
 };
+// Draws the watch and counts and colours it on the GPU.
 // `feeding`: the passes to draw first, when not all of watch.feeding need
 // it (a viewer after a change that reaches only some of them).
 WatchFrame drawWatch(Renderer& renderer, const Watch& watch, const UniformValues& values, double time,
                      const std::vector<bool>* feeding = nullptr);
+
+// The exact value at pixel x, y (row 0 at the top) of the watch last
+// drawn, as pipeline/watch_picture.h's watchValueAt says it.
+std::string watchValueAt(const Renderer& renderer, int x, int y);
 
 // "bloom.frag:12 rgbblur, pass 2 (Program Bloom)": what a front end shows
 // beside the picture.

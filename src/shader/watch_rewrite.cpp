@@ -434,7 +434,7 @@ bool parseWatchSpec(std::string_view text, WatchSpec& out, std::string& why) {
 WatchedStage watchFragment(std::string_view source, int line, std::string_view expression) {
     WatchedStage w = capture(source, line, expression, true);
     if (w.ok)
-        w.text += fragmentMain(flavourOf(source), "glimmer_watch_v", "vec4(1., glimmer_watch_n, glimmer_watch_k, 1.)",
+        w.text += fragmentMain(flavourOf(source), "glimmer_watch_v", "vec4(1., glimmer_watch_n * 0.25, glimmer_watch_k / 3., 1.)",
                                "glimmer_watch_n = 0.; ");
     return w;
 }
@@ -465,7 +465,7 @@ WatchedStage watchFragmentOfVertex(std::string_view source) {
     const std::string q = f.outs ? "in " + f.hp : "varying ";
     out.text = applyEdits(source, edits) + lineEnding(source) + q + "vec4 glimmer_watch_vary;\n" + q +
                "vec2 glimmer_watch_vinfo;\n" +
-               fragmentMain(f, "glimmer_watch_vary", "vec4(1., glimmer_watch_vinfo, 1.)", "");
+               fragmentMain(f, "glimmer_watch_vary", "vec4(1., glimmer_watch_vinfo * vec2(0.25, 1. / 3.), 1.)", "");
     out.ok = true;
     return out;
 }

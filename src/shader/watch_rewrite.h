@@ -10,8 +10,10 @@
 //   - The rewritten fragment stage writes exactly two outputs: the value
 //     (kWatchValueOut, location 0: the expression widened to a vec4) and
 //     what is known of it (kWatchInfoOut, location 1: x = 1 where the
-//     fragment ran, y = its component count, 0 where the line did not run
-//     there, z = its kind, WatchKind). The shader's own outputs become plain
+//     fragment ran, y = its component count / 4, 0 where the line did not
+//     run there, z = its kind / 3, WatchKind: fractions, so an 8-bit target
+//     holds them, a quarter of the bytes a float one takes, which on a GPU
+//     is the watch's cost; gl/watch_gpu.cpp). The shader's own outputs become plain
 //     globals, so its main runs unchanged and discards still discard.
 //   - The expression's type is found by the compiler (overloads of
 //     kWatchStore), not here: a matrix or a struct fails to compile on the

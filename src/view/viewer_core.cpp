@@ -126,7 +126,7 @@ bool ViewerCore::draw(double budgetMs) {
 Image ViewerCore::finishedPicture() {
     if (!s_.renderer || !s_.good) return {};
     draw(std::numeric_limits<double>::infinity());
-    if (s_.watch) return watchFrame_.picture;
+    if (s_.watch) return s_.renderer->readWatchPicture();
     return s_.shownTexture < 0 ? s_.renderer->readScreen() : s_.renderer->readTexture(s_.shownTexture);
 }
 
@@ -191,10 +191,10 @@ const Image& ViewerCore::probeImage() {
 
 std::string ViewerCore::probeTextAt(int ix, int iy) {
     if (s_.watch) {  // the watch's own floats, every component, not the picture's bytes
-        const Image& v = watchFrame_.capture.value;
-        if (ix < 0 || iy < 0 || ix >= v.width || iy >= v.height) return "";
+        const WatchStats& w = watchFrame_.stats;
+        if (!watchFrame_.drawn || ix < 0 || iy < 0 || ix >= w.width || iy >= w.height) return "";
         return fmt::format("({}, {}) of the watch: {} = {}", ix, iy, s_.watch->spec.expression,
-                           watchValueAt(v, watchFrame_.capture.info, ix, iy));
+                           watchValueAt(*s_.renderer, ix, iy));
     }
     const Image& img = probeImage();
     if (img.empty() || ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return "";
@@ -209,10 +209,14 @@ std::string ViewerCore::probeTextAt(int ix, int iy) {
 const std::string& ViewerCore::probe(double x, double y, int pw, int ph, bool tooltip) {
     s_.probeText.clear();
     if (!s_.probe || !s_.renderer || s_.compare || pw < 1 || ph < 1) return s_.probeText;
-    const Image& img = s_.watch ? watchFrame_.capture.value : probeImage();
-    if (img.empty()) return s_.probeText;
-    double scale = std::min(double(pw) / img.width, double(ph) / img.height);
-    double ox = (pw - img.width * scale) / 2, oy = (ph - img.height * scale) / 2;
+    int width = watchFrame_.stats.width, height = watchFrame_.stats.height;
+    if (!s_.watch) {
+        const Image& img = probeImage();
+        width = img.width, height = img.height;
+    }
+    if (width < 1 || height < 1) return s_.probeText;
+    double scale = std::min(double(pw) / width, double(ph) / height);
+    double ox = (pw - width * scale) / 2, oy = (ph - height * scale) / 2;
     s_.probeText = probeTextAt(int(std::floor((x - ox) / scale)), int(std::floor((y - oy) / scale)));
     if (tooltip && !s_.probeText.empty()) {
         ImGui::BeginTooltip();
@@ -366,9 +370,8 @@ bool ViewerCore::drawWatchFrame() {
     }
     const auto start = Clock::now();
     watchFrame_ = drawWatch(*s_.renderer, *s_.watch, *s_.values, s_.time, &feeding);
-    s_.renderer->uploadPicture(watchFrame_.picture);
-    s_.watchSummary = watchFrame_.picture.empty() ? "the driver cannot draw into a float target (RGBA32F)"
-                                                  : watchSummary(watchFrame_.stats);
+    s_.watchSummary = watchFrame_.drawn ? watchSummary(watchFrame_.stats)
+                                        : "the driver cannot draw into a float target (RGBA32F)";
     s_.drawnWith = s_.values;
     s_.drawnTime = s_.time;
     s_.sceneMoved = false;

@@ -36,7 +36,7 @@ TEST(WatchRewrite, CaptureGoesRightAfterTheStatementOnTheLine) {
     EXPECT_NE(w.text.find("layout(location = 0) out highp vec4 glimmer_watch_value;\n"
                           "layout(location = 1) out highp vec4 glimmer_watch_info;\n"
                           "void main() { glimmer_watch_n = 0.; glimmer_watched_main(); glimmer_watch_value = "
-                          "glimmer_watch_v; glimmer_watch_info = vec4(1., glimmer_watch_n, glimmer_watch_k, 1.); }\n"),
+                          "glimmer_watch_v; glimmer_watch_info = vec4(1., glimmer_watch_n * 0.25, glimmer_watch_k / 3., 1.); }\n"),
               std::string::npos);
     EXPECT_EQ(std::count(w.text.begin(), w.text.end(), '\n'), std::count(kBloom, kBloom + strlen(kBloom), '\n') + 3);
 }
@@ -110,8 +110,8 @@ TEST(WatchRewrite, OwnOutputsBecomeGlobalsAndOldShadersUseFragData) {
     WatchedStage o = watchFragment(old, 3, "v");
     ASSERT_TRUE(o.ok) << o.error;
     EXPECT_EQ(lineAfter(o, 4), "  glimmer_watch_FragData[0] = vec4(v);");
-    EXPECT_NE(o.text.find("gl_FragData[0] = glimmer_watch_v; gl_FragData[1] = vec4(1., glimmer_watch_n, "
-                          "glimmer_watch_k, 1.); }"), std::string::npos);
+    EXPECT_NE(o.text.find("gl_FragData[0] = glimmer_watch_v; gl_FragData[1] = vec4(1., glimmer_watch_n * 0.25, "
+                          "glimmer_watch_k / 3., 1.); }"), std::string::npos);
     EXPECT_EQ(o.text.find("uint"), std::string::npos) << "GLSL 1.20 has no uint";
     EXPECT_EQ(o.text.find("highp"), std::string::npos) << "nor precision qualifiers";
 }
@@ -127,7 +127,7 @@ TEST(WatchRewrite, AVertexWatchPassesTheValueToTheFragmentStage) {
     WatchedStage f = watchFragmentOfVertex(kBloom);
     ASSERT_TRUE(f.ok) << f.error;
     EXPECT_NE(f.text.find("in highp vec4 glimmer_watch_vary;\nin highp vec2 glimmer_watch_vinfo;\n"), std::string::npos);
-    EXPECT_NE(f.text.find("glimmer_watch_value = glimmer_watch_vary; glimmer_watch_info = vec4(1., glimmer_watch_vinfo, 1.);"),
+    EXPECT_NE(f.text.find("glimmer_watch_value = glimmer_watch_vary; glimmer_watch_info = vec4(1., glimmer_watch_vinfo * vec2(0.25, 1. / 3.), 1.);"),
               std::string::npos);
 }
 

@@ -1,4 +1,4 @@
-#include "metrics/watch_picture.h"
+#include "pipeline/watch_picture.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,8 +44,8 @@ WatchMark markOf(const Pixel& p, const WatchStats& s) {
     for (int c = 0; c < n; ++c) {
         nan |= std::isnan(p.v[c]);
         inf |= std::isinf(p.v[c]);
-        below |= p.v[c] < s.range.lo;
-        above |= p.v[c] > s.range.hi;
+        below |= p.v[c] < float(s.range.lo);
+        above |= p.v[c] > float(s.range.hi);
     }
     return nan ? WatchMark::NaN : inf ? WatchMark::Inf : below ? WatchMark::Below : above ? WatchMark::Above : WatchMark::None;
 }
@@ -53,8 +53,8 @@ WatchMark markOf(const Pixel& p, const WatchStats& s) {
 // As a GPU stores a float in an 8-bit channel: the product with 255 in float,
 // rounded to nearest, ties to even (llvmpipe's 0.0647058859 * 255 = 16.5 gives
 // 16; rounding the exact product up gave 17 and a byte unlike the shader's).
-unsigned char toByte(double t) {
-    const float product = std::clamp(float(t), 0.f, 1.f) * 255.f;
+unsigned char toByte(float t) {
+    const float product = std::clamp(t, 0.f, 1.f) * 255.f;
     return static_cast<unsigned char>(std::nearbyint(product));
 }
 
@@ -92,10 +92,8 @@ WatchStats watchStats(const Image& value, const Image& info, std::optional<Watch
                 s.hi[size_t(c)] = std::max(s.hi[size_t(c)], double(p.v[c]));
             }
         }
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (int c = 0; c < s.components; ++c) lo = std::min(lo, s.lo[size_t(c)]), hi = std::max(hi, s.hi[size_t(c)]);
     s.fixed = fixed.has_value();
-    s.range = fixed ? *fixed : lo <= hi ? WatchRange{lo, hi} : WatchRange{0, 1};
+    s.range = watchRangeOf(s, fixed);
     for (int y = 0; y < s.height; ++y)
         for (int x = 0; x < s.width; ++x) switch (markOf(pixelAt(value, info, x, y), s)) {
             case WatchMark::NaN: ++s.nan; break;
@@ -107,6 +105,13 @@ WatchStats watchStats(const Image& value, const Image& info, std::optional<Watch
     return s;
 }
 
+WatchRange watchRangeOf(const WatchStats& s, std::optional<WatchRange> fixed) {
+    if (fixed) return *fixed;
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (int c = 0; c < s.components && c < 4; ++c) lo = std::min(lo, s.lo[size_t(c)]), hi = std::max(hi, s.hi[size_t(c)]);
+    return lo <= hi ? WatchRange{lo, hi} : WatchRange{0, 1};
+}
+
 WatchMark watchMarkAt(const Image& value, const Image& info, const WatchStats& stats, int x, int y) {
     if (!sameShape(value, info) || x < 0 || y < 0 || x >= value.width || y >= value.height) return WatchMark::NotDrawn;
     return markOf(pixelAt(value, info, x, y), stats);
@@ -115,7 +120,8 @@ WatchMark watchMarkAt(const Image& value, const Image& info, const WatchStats& s
 Image watchPicture(const Image& value, const Image& info, const WatchStats& s) {
     if (!sameShape(value, info)) return {};
     Image out = Image::rgba8(value.width, value.height);
-    const double span = s.range.hi - s.range.lo;
+    // In float, as the GPU's colouring pass (gl/watch_gpu.cpp) computes it.
+    const float lo = float(s.range.lo), scale = watchScale(lo, float(s.range.hi));
     for (int y = 0; y < value.height; ++y)
         for (int x = 0; x < value.width; ++x) {
             Pixel p = pixelAt(value, info, x, y);
@@ -129,7 +135,7 @@ Image watchPicture(const Image& value, const Image& info, const WatchStats& s) {
                 continue;
             }
             // A range of one value shows it as mid grey rather than dividing by zero.
-            auto t = [&](int c) { return span > 0 ? (double(p.v[c]) - s.range.lo) / span : 0.5; };
+            auto t = [&](int c) { return scale > 0 ? (p.v[c] - lo) * scale : 0.5f; };
             const int n = p.components();
             o[0] = toByte(t(0));
             o[1] = n >= 2 ? toByte(t(1)) : o[0];

@@ -1,10 +1,15 @@
 // What a watch's floats say (issue 28): their range, how many pixels hold
 // NaN, Inf or values outside a fixed range, and the picture that shows them.
 // No OpenGL: it reads the two float images gl/renderer.h's WatchCapture holds.
+// The GPU computes the same numbers and picture without reading the floats
+// back (gl/watch_gpu.cpp); this is the reference the tests hold it to, and
+// what a probe of one pixel says.
 //
-// The picture, per pixel where the watched line ran: t = (v - lo) / (hi - lo)
-// per component, as 8 bits rounded as a GPU stores a colour (t x 255 in
-// float, to nearest, ties to even):
+// The picture, per pixel where the watched line ran: t = (v - lo) x s per
+// component, s = watchScale(lo, hi), in float with lo and hi as floats (as
+// the GPU draws it, gl/watch_gpu.cpp; below and above are against those
+// floats too), as 8 bits rounded as a GPU stores a colour (t x 255 in float,
+// to nearest, ties to even):
 // a scalar grey (t, t, t, 1), a vec2 (t0, t1, 0, 1), a vec3 (t0, t1, t2, 1),
 // a vec4 (t0, t1, t2, t3). So a value in 0..1 watched with range 0,1 gives
 // the bytes of a shader that writes that value as its colour. Elsewhere a
@@ -13,6 +18,7 @@
 // line did not run, no fragment at all.
 #pragma once
 #include <array>
+#include <limits>
 #include <optional>
 #include <string>
 
@@ -38,6 +44,17 @@ struct WatchStats {
 
 // The statistics of a capture; `fixed` sets the range instead of the values.
 WatchStats watchStats(const Image& value, const Image& info, std::optional<WatchRange> fixed = std::nullopt);
+
+// 1 / (hi - lo) in float, the picture's scale; 0 when that is not a
+// finite number above 0 (a range of one value, shown as mid grey).
+inline float watchScale(float lo, float hi) {
+    const float span = hi - lo, scale = 1.f / span;
+    return span > 0 && scale < std::numeric_limits<float>::infinity() ? scale : 0.f;
+}
+
+// The range shown: the fixed one, else the finite values' own over every
+// component (s.lo, s.hi, s.components), else 0..1 when there are none.
+WatchRange watchRangeOf(const WatchStats& s, std::optional<WatchRange> fixed);
 
 // The picture described at the top, RGBA8, row 0 at the top.
 Image watchPicture(const Image& value, const Image& info, const WatchStats& stats);

@@ -1,0 +1,165 @@
+// The watch counted and coloured on the GPU (gl/watch_gpu.cpp) against the
+// CPU's reference (pipeline/watch_picture.h) computed from the same floats
+// read back: every statistic and every byte of the picture equal, for
+// watches that have NaN, Inf, values outside a fixed range, pixels where the
+// line did not run and pixels nothing drew, a vertex watch, ints and bools,
+// at sizes that take one and two levels of the reduction and do not divide
+// into its blocks.
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "backends/context.h"
+#include "pipeline/watch_picture.h"
+#include "pipeline/watch.h"
+#include "render/render_harness.h"
+#include "common/test_folder.h"
+
+namespace glimmer {
+namespace {
+namespace fs = std::filesystem;
+
+// Lines 6-8 run only left of x = 20; the quad covers the middle 60% of the
+// screen, so the rest has no fragment at all.
+const char* const kPartialFrag = R"(#version 330 compatibility
+in vec2 vST;
+void main( )
+{
+    vec4 c = vec4( vST, 0., 1. );
+    if( gl_FragCoord.x < 20. ) {
+        c.b = gl_FragCoord.y / 7. - 2.;
+        int k = int( gl_FragCoord.y ) % 5;
+    }
+    gl_FragColor = c;
+}
+)";
+
+const char* const kPartialGlib = R"(##OpenGL GLIB
+Ortho -1 1 -1 1
+LookAt 0 0 1  0 0 0  0 1 0
+Vertex quad.vert
+Fragment partial.frag
+Program Partial
+QuadXY 0 0.6
+)";
+
+struct Case {
+    const char* script;  // in the test's folder
+    const char* watch;
+    int width, height;
+    std::optional<WatchRange> range;
+    const char* has;  // what the CPU's statistics must hold, so the case tests something
+};
+
+void expectSameStats(const WatchStats& gpu, const WatchStats& cpu) {
+    EXPECT_EQ(gpu.width, cpu.width);
+    EXPECT_EQ(gpu.height, cpu.height);
+    EXPECT_EQ(gpu.components, cpu.components);
+    EXPECT_EQ(gpu.kind, cpu.kind);
+    for (size_t c = 0; c < 4; ++c) {
+        EXPECT_EQ(gpu.lo[c], cpu.lo[c]) << "component " << c;
+        EXPECT_EQ(gpu.hi[c], cpu.hi[c]) << "component " << c;
+    }
+    EXPECT_EQ(gpu.range.lo, cpu.range.lo);
+    EXPECT_EQ(gpu.range.hi, cpu.range.hi);
+    EXPECT_EQ(gpu.fixed, cpu.fixed);
+    EXPECT_EQ(gpu.drawn, cpu.drawn);
+    EXPECT_EQ(gpu.reached, cpu.reached);
+    EXPECT_EQ(gpu.nan, cpu.nan);
+    EXPECT_EQ(gpu.inf, cpu.inf);
+    EXPECT_EQ(gpu.below, cpu.below);
+    EXPECT_EQ(gpu.above, cpu.above);
+    EXPECT_EQ(watchSummary(gpu), watchSummary(cpu));
+}
+
+TEST(WatchGpu, CountsAndPictureEqualTheCpuReferenceOnTheSameFloats) {
+    testing::TestFolder dir("watch_gpu");
+    const fs::path data = fs::path(GLIMMER_TEST_DATA) / "cli/watch";
+    for (const char* f : {"calibration.glib", "calibration.frag", "quad.vert"})
+        fs::copy_file(data / f, dir.path / f, fs::copy_options::overwrite_existing);
+    std::ofstream(dir.path / "partial.frag") << kPartialFrag;
+    std::ofstream(dir.path / "partial.glib") << kPartialGlib;
+
+    const Case cases[] = {
+        {"calibration.glib", "calibration.frag:10:exact", 37, 23, std::nullopt, "vec3"},
+        {"calibration.glib", "calibration.frag:13:odd", 40, 40, std::nullopt, "nan inf"},
+        {"calibration.glib", "calibration.frag:13:odd", 40, 40, WatchRange{30, 35}, "nan inf below above"},
+        // 260 x 300: two levels of 16x16 blocks (17 x 19, then 2 x 2), neither dividing evenly; the
+        // quad keeps its square shape, so rows above and below it are not drawn.
+        {"calibration.glib", "calibration.frag:13:odd", 260, 300, WatchRange{100.1, 200.3}, "nan inf below above not-drawn"},
+        {"calibration.glib", "calibration.frag:10:exact.xy * 0.001", 260, 300, WatchRange{-0.005, 0.7}, "below above"},
+        {"calibration.glib", "quad.vert:10:vST", 53, 31, std::nullopt, "vec2"},
+        {"calibration.glib", "quad.vert:10:vec4(vST, vST.x * vST.y, 1. - vST.y)", 53, 31, std::nullopt, "vec4"},
+        {"partial.glib", "partial.frag:7:c", 64, 48, std::nullopt, "not-run not-drawn"},
+        {"partial.glib", "partial.frag:8:k", 64, 48, std::nullopt, "int not-run"},
+        {"partial.glib", "partial.frag:8:bvec3(k > 1, k > 2, true)", 64, 48, std::nullopt, "bool"},
+        {"partial.glib", "partial.frag:8:uvec2(k, 7)", 64, 48, WatchRange{1, 6}, "below above"},
+    };
+    for (const std::string& backend : testing::testBackends()) {
+        for (const Case& c : cases) {
+            SCOPED_TRACE(backend + " " + c.script + " " + c.watch + " " + std::to_string(c.width) + "x" +
+                         std::to_string(c.height));
+            PlanOptions options;
+            options.width = c.width, options.height = c.height;
+            Diagnostics diags;
+            LoadedScript loaded;
+            ASSERT_TRUE(loadScript((dir.path / c.script).string(), options, diags, loaded));
+            UniformValues values(loaded.plan);
+            BackendChoice choice;
+            ASSERT_TRUE(parseBackend(backend, choice));
+            std::string why;
+            auto context = createContext(choice, why);
+            ASSERT_TRUE(context) << why;
+            auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
+            ASSERT_TRUE(renderer) << why;
+            ASSERT_TRUE(loadAndUpload(*renderer, loaded, false, diags));
+            WatchSpec spec;
+            ASSERT_TRUE(parseWatchSpec(c.watch, spec, why)) << why;
+            Watch watch;
+            ASSERT_TRUE(startWatch(spec, loaded.plan, *renderer, diags, watch));
+            watch.range = c.range;
+            WatchFrame frame = drawWatch(*renderer, watch, values, 0);
+            ASSERT_TRUE(frame.drawn);
+
+            const WatchCapture floats = renderer->readWatchCapture();
+            ASSERT_EQ(floats.value.width, c.width);
+            ASSERT_EQ(floats.value.height, c.height);
+            const WatchStats cpu = watchStats(floats.value, floats.info, c.range);
+            const std::string has = c.has;
+            if (has.find("nan") != std::string::npos) EXPECT_GT(cpu.nan, 0);
+            if (has.find("inf") != std::string::npos) EXPECT_GT(cpu.inf, 0);
+            if (has.find("below") != std::string::npos) EXPECT_GT(cpu.below, 0);
+            if (has.find("above") != std::string::npos) EXPECT_GT(cpu.above, 0);
+            if (has.find("not-run") != std::string::npos) EXPECT_LT(cpu.reached, cpu.drawn);
+            if (has.find("not-drawn") != std::string::npos) EXPECT_LT(cpu.drawn, c.width * c.height);
+            if (has.find("vec2") != std::string::npos) EXPECT_EQ(cpu.components, 2);
+            if (has.find("vec4") != std::string::npos) EXPECT_EQ(cpu.components, 4);
+            if (has.find("int") != std::string::npos) EXPECT_EQ(cpu.kind, 1);
+            if (has.find("bool") != std::string::npos) EXPECT_EQ(cpu.kind, 3);
+            expectSameStats(frame.stats, cpu);
+
+            const Image want = watchPicture(floats.value, floats.info, cpu);
+            const Image got = renderer->readWatchPicture();
+            ASSERT_EQ(got.width, want.width);
+            ASSERT_EQ(got.height, want.height);
+            long differ = 0, first = -1;
+            for (size_t i = 0; i < want.u8.size() && i < got.u8.size(); ++i)
+                if (want.u8[i] != got.u8[i]) {
+                    ++differ;
+                    if (first < 0) first = long(i);
+                }
+            EXPECT_EQ(differ, 0) << "first at pixel " << first / 4 % c.width << ", " << first / 4 / c.width
+                                 << " channel " << first % 4;
+
+            // One pixel read back alone is the same floats as the whole.
+            const int px = c.width / 3, py = c.height / 2;
+            const WatchCapture one = renderer->readWatchCapture(px, py, 1, 1);
+            EXPECT_EQ(watchValueAt(one.value, one.info, 0, 0), watchValueAt(floats.value, floats.info, px, py));
+            EXPECT_EQ(watchValueAt(*renderer, px, py), watchValueAt(floats.value, floats.info, px, py));
+        }
+    }
+}
+
+}  // namespace
+}  // namespace glimmer
