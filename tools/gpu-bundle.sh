@@ -12,9 +12,15 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build="${1:-build}"
-rm -rf .gl && mkdir -p .gl/bin .gl/lib .gl/debs
+# .gl/ref (tools/gpu-check.sh --reference) is kept: it takes minutes to make.
+rm -rf .gl/bin .gl/lib .gl/debs .gl/root .gl/env.sh && mkdir -p .gl/bin .gl/lib .gl/debs
 cp "$build/src/app/glimmer" .gl/bin/
 [ -x "$build/src/bench/glimmer-bench" ] && cp "$build/src/bench/glimmer-bench" .gl/bin/
+# The render tests (pixels against the CPU's references, the watch's GPU
+# counts against the CPU's), run there with GLIMMER_TEST_BACKENDS=egl-device.
+# They find their data by the source folder's path here, which env.sh makes
+# there as a link to the carried tree when it can.
+[ -x "$build/tests/test_render" ] && cp "$build/tests/test_render" .gl/bin/
 strip --strip-debug .gl/bin/*  # the carried tree is limited to 64 MiB
 (cd .gl/debs && apt-get download libegl1 libglvnd0 libopengl0 libgl1 libglx0 libgles2 libvulkan1 >/dev/null 2>&1)
 # Every shared library the programs link, but glibc's (the machine has its
@@ -31,4 +37,7 @@ fi
 export LD_LIBRARY_PATH="$here/root/usr/lib/x86_64-linux-gnu:$here/lib${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
 export __EGL_VENDOR_LIBRARY_FILENAMES=/usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json
 ENV
+# The render tests' compiled-in source folder, linked to the tree there.
+src="$(pwd)"
+printf '[ -e %q ] || { mkdir -p %q 2>/dev/null && ln -s "$(pwd)" %q; } 2>/dev/null\n' "$src" "$(dirname "$src")" "$src" >> .gl/env.sh
 du -sh .gl

@@ -304,7 +304,7 @@ private:
     void checkTime(Worker& w) {
         if (w.job < 0) return;
         const BatchJob& job = jobs_[size_t(w.job)];
-        double limit = s_.contextSeconds;
+        double limit = contextLimitSeconds(s_);
         if (w.begun) {
             // The limit now: the whole job's, or (grading) that of the setting it is drawing.
             limit = s_.timeoutSeconds;
@@ -320,8 +320,13 @@ private:
         taintOthers(w);
         BatchResult r;
         if (!begun)
-            r = failed(index, fmt::format("{}: error: the worker could not make its GL context in {:g} s\n", job.script,
-                                          limit), 0);
+            // Seen on the lent H200: a worker killed while drawing stayed in the
+            // NVIDIA driver's lock for minutes, and every new context on the
+            // machine waited behind it (issue 36).
+            r = failed(index, fmt::format("{}: error: the worker could not make its GL context in {:g} s\n"
+                                          "glimmer: note: on a GPU, a process stuck in the driver (one killed while "
+                                          "drawing, say) holds every new context: `ps -eo pid,stat,wchan,args` shows "
+                                          "it in state D\n", job.script, limit), 0);
         else
             r = failed(index,
                        fmt::format("{}: error: stopped after {:g} s ({}) {}\n", job.script, limit,

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -50,23 +51,42 @@ std::string resultJson(const BatchJob& job, int exitCode, const std::string& dia
 // never loses a context: GLIMMER_TEST_FAULT=KIND:TEXT:MARKER makes the
 // worker's picture of a script whose path holds TEXT lost to a GPU reset
 // (KIND "reset") or read back as zeros with no error (KIND "zeros", what an
-// NVIDIA worker reads after another process's kill). Once: the worker that
-// creates the file MARKER first; with MARKER empty, every time.
-void injectFault(const std::string& script, Image& picture, std::string& failure) {
+// NVIDIA worker reads after another process's kill); KIND "stuck" (TEXT
+// "context") makes a worker never finish making its context, as one waiting
+// behind a process stuck in NVIDIA's driver did on the H200. Once: the
+// worker that creates the file MARKER first; with MARKER empty, every time.
+struct Fault {
+    std::string kind, part, marker;
+};
+std::optional<Fault> faultAsked() {
     const char* spec = std::getenv("GLIMMER_TEST_FAULT");
-    if (!spec) return;
+    if (!spec) return std::nullopt;
     const std::string text = spec;
     const size_t a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
-    if (b == std::string::npos) return;
-    const std::string kind = text.substr(0, a), part = text.substr(a + 1, b - a - 1), marker = text.substr(b + 1);
-    if (part.empty() || script.find(part) == std::string::npos) return;
-    if (!marker.empty()) {
-        const int fd = ::open(marker.c_str(), O_CREAT | O_EXCL | O_WRONLY, 0600);
-        if (fd < 0) return;  // another drawing had it
-        ::close(fd);
-    }
-    if (kind == "reset") failure = "the GPU was reset by another process while this script drew (GLIMMER_TEST_FAULT)";
-    else if (kind == "zeros") std::fill(picture.u8.begin(), picture.u8.end(), std::uint8_t(0));
+    if (b == std::string::npos || b == a + 1) return std::nullopt;
+    return Fault{text.substr(0, a), text.substr(a + 1, b - a - 1), text.substr(b + 1)};
+}
+
+// Whether this drawing takes the fault (MARKER: the first to make the file).
+bool takesFault(const Fault& f) {
+    if (f.marker.empty()) return true;
+    const int fd = ::open(f.marker.c_str(), O_CREAT | O_EXCL | O_WRONLY, 0600);
+    if (fd < 0) return false;  // another drawing had it
+    ::close(fd);
+    return true;
+}
+
+void injectFault(const std::string& script, Image& picture, std::string& failure) {
+    const std::optional<Fault> f = faultAsked();
+    if (!f || script.find(f->part) == std::string::npos || f->kind == "stuck" || !takesFault(*f)) return;
+    if (f->kind == "reset") failure = "the GPU was reset by another process while this script drew (GLIMMER_TEST_FAULT)";
+    else if (f->kind == "zeros") std::fill(picture.u8.begin(), picture.u8.end(), std::uint8_t(0));
+}
+
+void stickIfAsked() {
+    const std::optional<Fault> f = faultAsked();
+    if (!f || f->kind != "stuck" || f->part != "context" || !takesFault(*f)) return;
+    for (;;) ::pause();  // until the parent's kill
 }
 
 // Sets one "name=value" of a grading setting. A range takes the value even
@@ -297,6 +317,7 @@ bool readAll(int fd, void* data, size_t n) {
     std::unique_ptr<GlContext> context;
     std::string contextError;
     BackendChoice choice;
+    stickIfAsked();
     if (parseBackend(s.backend, choice)) context = createContext(choice, contextError);
     else contextError = "unknown backend '" + s.backend + "'";
     bool open = true;
@@ -323,6 +344,11 @@ bool readAll(int fd, void* data, size_t n) {
     }
     std::fflush(nullptr);
     ::_exit(0);
+}
+
+double contextLimitSeconds(const BatchSettings& s) {
+    const std::optional<Fault> f = faultAsked();
+    return f && f->kind == "stuck" ? 2 : s.contextSeconds;
 }
 
 std::string failedResultJson(const BatchJob& job, const std::string& diagnostics) {

@@ -31,6 +31,11 @@ constexpr std::int32_t kPhasePreparing = -1;
 // How BatchResult::failure begins when the worker has no GL context.
 constexpr const char* kNoContext = "no GL context: ";
 
+// How long a worker may take to make its context: s.contextSeconds, or 2 s
+// under the test hook's fault "stuck" (batch_worker.cpp), so a test of a
+// worker stuck in the driver does not wait a minute.
+double contextLimitSeconds(const BatchSettings& s);
+
 // Runs in the forked child; never returns.
 [[noreturn]] void workerMain(int jobsFd, int resultsFd, const std::vector<BatchJob>& jobs, const BatchSettings& s);
 

@@ -94,6 +94,43 @@ TEST(CliBatchRetry, AResetOnEveryDrawingIsAnErrorThatSaysSoAndWritesNoPicture) {
     EXPECT_EQ(pngOf(dir.path() / "out", "_lost"), "");
 }
 
+// A worker that never gets its context (on the H200: waiting behind a
+// process stuck in NVIDIA's driver) is killed after the context's time
+// limit and its job drawn alone in a fresh worker; when no worker ever gets
+// one, every job says so, with what to look for, and the batch ends.
+TEST(CliBatchRetry, AWorkerStuckBeforeItsContextIsReplacedAndTheBatchEnds) {
+    TempDir dir;
+    const std::string a = writeSolid(dir, "a.glib", 0), b = writeSolid(dir, "b.glib", 1);
+    const fs::path marker = dir.path() / "fault-happened";
+    auto batch = [&](const std::string& spec, const std::string& out) {
+        Fault fault(spec);
+        return runGlimmer({"batch", a, b, "-o", dir.file(out), "--report", dir.file(out + ".jsonl"), "--size", "32x32",
+                           "--backend", "osmesa", "--jobs", "2"},
+                          60);
+    };
+    auto once = batch("stuck:context:" + marker.string(), "once");
+    EXPECT_TRUE(fs::exists(marker)) << "the fault never happened";
+    EXPECT_EQ(once.exitCode, 0) << once.err;
+    auto lines = report(dir.path() / "once.jsonl");
+    ASSERT_EQ(lines.size(), 2u);
+    for (const auto& l : lines) EXPECT_EQ(l.value("diagnostics", "?"), "") << l.dump();
+    auto ref = runGlimmer({"-q", "render", a, "-o", dir.file("a.png"), "--size", "32x32", "--backend", "osmesa"});
+    ASSERT_EQ(ref.exitCode, 0) << ref.err;
+    EXPECT_EQ(readAll(pngOf(dir.path() / "once", "_a")), readAll(dir.path() / "a.png"));
+
+    auto always = batch("stuck:context:", "always");
+    EXPECT_EQ(always.exitCode, 1) << always.err;
+    lines = report(dir.path() / "always.jsonl");
+    ASSERT_EQ(lines.size(), 2u);
+    for (size_t k = 0; k < 2; ++k)
+        EXPECT_EQ(lines[k].value("diagnostics", ""),
+                  (k ? b : a) + ": error: the worker could not make its GL context in 2 s\n"
+                  "glimmer: note: on a GPU, a process stuck in the driver (one killed while drawing, say) holds every new "
+                  "context: `ps -eo pid,stat,wchan,args` shows it in state D\n"
+                  "glimmer: note: the same when drawn again, alone on the machine in a fresh worker\n") << lines[k].dump();
+    EXPECT_EQ(pngOf(dir.path() / "always", "_a"), "");
+}
+
 // Grading: a correct submission whose first drawing read back as zeros (an
 // NVIDIA worker after another's kill, no error said) is graded on its second,
 // lone drawing, not "wrong, the picture is a single colour".
