@@ -1,4 +1,4 @@
-#include "view/file_watch.h"
+#include "view/file_monitor.h"
 
 #include <fcntl.h>
 #include <sys/inotify.h>
@@ -38,15 +38,15 @@ std::pair<std::string, std::string> splitPath(const std::string& path) {
 
 }  // namespace
 
-FileWatch::FileWatch(std::chrono::milliseconds settle) : settle_(settle) {
+FileMonitor::FileMonitor(std::chrono::milliseconds settle) : settle_(settle) {
     fd_ = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
 }
 
-FileWatch::~FileWatch() {
+FileMonitor::~FileMonitor() {
     if (fd_ >= 0) ::close(fd_);
 }
 
-void FileWatch::watch(const std::vector<std::string>& paths) {
+void FileMonitor::follow(const std::vector<std::string>& paths) {
     entries_.clear();
     order_.clear();
     if (fd_ >= 0) {
@@ -74,7 +74,7 @@ void FileWatch::watch(const std::vector<std::string>& paths) {
     }
 }
 
-void FileWatch::drainEvents() {
+void FileMonitor::drainEvents() {
     alignas(inotify_event) char buf[16384];
     for (;;) {
         ssize_t n = ::read(fd_, buf, sizeof buf);
@@ -94,14 +94,14 @@ void FileWatch::drainEvents() {
     }
 }
 
-bool FileWatch::busy() const {
+bool FileMonitor::busy() const {
     if (fd_ < 0) return !order_.empty();
     for (const auto& [p, e] : entries_)
         if (e.hasPending || e.dirty || e.unwatched) return true;
     return false;
 }
 
-std::vector<std::string> FileWatch::poll(Clock::time_point now) {
+std::vector<std::string> FileMonitor::poll(Clock::time_point now) {
     if (fd_ >= 0) drainEvents();
     std::vector<std::string> settled;
     for (const auto& path : order_) {

@@ -7,6 +7,8 @@
 // files it names are hashed again. With nothing changing, nothing is read
 // and a caller can sleep on notifyFd() until the kernel reports something.
 // Where inotify is missing every file is hashed on each poll, as before.
+// (Named "monitor", not "watch": a watch in Glimmer is a shader expression's
+// value shown over its pass, pipeline/watch.h.)
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -18,21 +20,21 @@
 
 namespace glimmer {
 
-class FileWatch {
+class FileMonitor {
 public:
     using Clock = std::chrono::steady_clock;
 
     // `settle`: how long a changed content must stay the same before it
     // counts. Polling every ~25 ms while busy() with 60 ms settle reloads
     // well within 200 ms of a save.
-    explicit FileWatch(std::chrono::milliseconds settle = std::chrono::milliseconds(60));
-    ~FileWatch();
-    FileWatch(const FileWatch&) = delete;
-    FileWatch& operator=(const FileWatch&) = delete;
+    explicit FileMonitor(std::chrono::milliseconds settle = std::chrono::milliseconds(60));
+    ~FileMonitor();
+    FileMonitor(const FileMonitor&) = delete;
+    FileMonitor& operator=(const FileMonitor&) = delete;
 
-    // Starts watching exactly these files, taking their current content as
+    // Starts following exactly these files, taking their current content as
     // the known state.
-    void watch(const std::vector<std::string>& paths);
+    void follow(const std::vector<std::string>& paths);
 
     // Reads what the kernel reported and hashes the files it named (all
     // files without inotify). Returns the files whose content changed and has

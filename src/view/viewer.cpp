@@ -25,7 +25,7 @@
 #include "pipeline/prepare_script.h"
 #include "gl/window_frame.h"
 #include "plan/dependencies.h"
-#include "view/file_watch.h"
+#include "view/file_monitor.h"
 #include "view/panel.h"
 #include "view/view_model.h"
 #include "view/view_keys.h"
@@ -105,7 +105,7 @@ public:
         if (options_.uiScale <= 0) glfwGetWindowContentScale(w, &sx, &sy);
         applyUiScale(chooseUiScale(options_.uiScale, sx, sy), false);
         gWindowAlive = true;
-        FileWaker waker(watch_.notifyFd());
+        FileWaker waker(monitor_.notifyFd());
 
         auto lastTick = Clock::now();
         bool quit = false;
@@ -118,7 +118,7 @@ public:
             const bool busy = core_.drawing();
             if (framesLeft > 0 || busy) glfwPollEvents();
             else if (animating) glfwWaitEventsTimeout(0.02);
-            else if (watch_.busy() || resizeAt_ != Clock::time_point::max()) glfwWaitEventsTimeout(0.025);
+            else if (monitor_.busy() || resizeAt_ != Clock::time_point::max()) glfwWaitEventsTimeout(0.025);
             else if (io.WantTextInput) glfwWaitEventsTimeout(0.5);  // the text cursor blinks
             else glfwWaitEvents();
             bool draw = framesLeft > 0 || animating;
@@ -134,7 +134,7 @@ public:
 
             followContentScale();
             draw |= followWindowSize(now);
-            auto changed = watch_.poll(now);
+            auto changed = monitor_.poll(now);
             if (!changed.empty()) {
                 load(fmt::format("reloaded after a change to {}", changed.front()).c_str());
                 draw = true;
@@ -273,7 +273,7 @@ private:
 
     void watchFilesOf(const Plan& plan) {
         std::set<std::string> files = {options_.script};
-        for (const auto& p : watch_.paths()) files.insert(p);  // keep what a broken edit may still need
+        for (const auto& p : monitor_.paths()) files.insert(p);  // keep what a broken edit may still need
         for (const auto& prog : plan.programs)
             for (const auto& st : prog.stages) files.insert(st.path);
         for (const auto& t : plan.textures) {
@@ -284,7 +284,7 @@ private:
             if (!m.path.empty()) files.insert(m.path);  // OBJ models
         files.erase("");  // a missing file with a stand-in (--stand-ins)
         std::vector<std::string> list(files.begin(), files.end());
-        if (list != watch_.paths()) watch_.watch(list);
+        if (list != monitor_.paths()) monitor_.follow(list);
     }
 
     // Keys, when no text field has the keyboard. True: quit.
@@ -460,7 +460,7 @@ private:
     int savedX_ = 0, savedY_ = 0;
     ViewerCore core_;  // the script, its picture and every step on them (view/viewer_core.h)
     ViewerState& s_;   // core_'s
-    FileWatch watch_;
+    FileMonitor monitor_;
     Clock::time_point lastHealth_{};
     std::uint64_t healthVersion_ = 0;  // the picture the health badge was measured on
     std::string lastReport_;

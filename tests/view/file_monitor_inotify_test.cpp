@@ -10,7 +10,7 @@
 
 #include <gtest/gtest.h>
 
-#include "view/file_watch.h"
+#include "view/file_monitor.h"
 
 using namespace glimmer;
 using namespace std::chrono_literals;
@@ -38,25 +38,25 @@ bool readable(int fd) {
     return ::poll(&p, 1, 0) == 1;
 }
 
-TEST(FileWatchInotify, AnIdleWatchReadsNoFile) {
+TEST(FileMonitorInotify, AnIdleWatchReadsNoFile) {
     Folder f;
-    FileWatch w(60ms);
-    w.watch({f.path("a.frag"), f.path("b.frag")});
+    FileMonitor w(60ms);
+    w.follow({f.path("a.frag"), f.path("b.frag")});
     ASSERT_GE(w.notifyFd(), 0);
-    auto t0 = FileWatch::Clock::now();
+    auto t0 = FileMonitor::Clock::now();
     for (int i = 0; i < 100; ++i) EXPECT_TRUE(w.poll(t0 + i * 25ms).empty());
     EXPECT_EQ(w.hashesDone(), 0u);
     EXPECT_FALSE(w.busy());
     EXPECT_FALSE(readable(w.notifyFd()));
 }
 
-TEST(FileWatchInotify, OnlyTheChangedFileIsRead) {
+TEST(FileMonitorInotify, OnlyTheChangedFileIsRead) {
     Folder f;
-    FileWatch w(60ms);
-    w.watch({f.path("a.frag"), f.path("b.frag")});
+    FileMonitor w(60ms);
+    w.follow({f.path("a.frag"), f.path("b.frag")});
     f.write("b.frag", "three");
     EXPECT_TRUE(readable(w.notifyFd()));
-    auto t0 = FileWatch::Clock::now();
+    auto t0 = FileMonitor::Clock::now();
     EXPECT_TRUE(w.poll(t0).empty());
     EXPECT_TRUE(w.busy());  // waiting for it to settle
     auto changed = w.poll(t0 + 80ms);
@@ -67,13 +67,13 @@ TEST(FileWatchInotify, OnlyTheChangedFileIsRead) {
     EXPECT_FALSE(readable(w.notifyFd()));
 }
 
-TEST(FileWatchInotify, ARenameOverTheFileIsSeen) {
+TEST(FileMonitorInotify, ARenameOverTheFileIsSeen) {
     Folder f;
-    FileWatch w(60ms);
-    w.watch({f.path("a.frag")});
+    FileMonitor w(60ms);
+    w.follow({f.path("a.frag")});
     f.write("a.frag.tmp", "saved by rename");
     fs::rename(f.dir / "a.frag.tmp", f.dir / "a.frag");
-    auto t0 = FileWatch::Clock::now();
+    auto t0 = FileMonitor::Clock::now();
     EXPECT_TRUE(w.poll(t0).empty());
     EXPECT_EQ(w.poll(t0 + 80ms).size(), 1u);
 }

@@ -6,7 +6,7 @@
 
 #include <gtest/gtest.h>
 
-#include "view/file_watch.h"
+#include "view/file_monitor.h"
 #include "view/view_commands.h"
 
 using namespace glimmer;
@@ -22,11 +22,11 @@ struct TempFile {
     void write(const std::string& s) const { std::ofstream(path, std::ios::binary | std::ios::trunc) << s; }
 };
 
-TEST(FileWatch, ReportsAChangeOnlyAfterItSettles) {
+TEST(FileMonitor, ReportsAChangeOnlyAfterItSettles) {
     TempFile f;
-    FileWatch w(60ms);
-    w.watch({f.path.string()});
-    auto t0 = FileWatch::Clock::now();
+    FileMonitor w(60ms);
+    w.follow({f.path.string()});
+    auto t0 = FileMonitor::Clock::now();
     EXPECT_TRUE(w.poll(t0).empty());
     f.write("two");
     EXPECT_TRUE(w.poll(t0 + 10ms).empty());   // just seen: not settled
@@ -37,11 +37,11 @@ TEST(FileWatch, ReportsAChangeOnlyAfterItSettles) {
     EXPECT_TRUE(w.poll(t0 + 200ms).empty());  // reported once
 }
 
-TEST(FileWatch, TruncateThenWriteIsOneChange) {
+TEST(FileMonitor, TruncateThenWriteIsOneChange) {
     TempFile f;
-    FileWatch w(60ms);
-    w.watch({f.path.string()});
-    auto t0 = FileWatch::Clock::now();
+    FileMonitor w(60ms);
+    w.follow({f.path.string()});
+    auto t0 = FileMonitor::Clock::now();
     f.write("");  // the editor truncates...
     EXPECT_TRUE(w.poll(t0 + 5ms).empty());
     f.write("three");  // ...then writes: the settle clock starts again
@@ -50,11 +50,11 @@ TEST(FileWatch, TruncateThenWriteIsOneChange) {
     EXPECT_EQ(w.poll(t0 + 120ms).size(), 1u);
 }
 
-TEST(FileWatch, WritingTheSameContentBackIsNoChange) {
+TEST(FileMonitor, WritingTheSameContentBackIsNoChange) {
     TempFile f;
-    FileWatch w(60ms);
-    w.watch({f.path.string()});
-    auto t0 = FileWatch::Clock::now();
+    FileMonitor w(60ms);
+    w.follow({f.path.string()});
+    auto t0 = FileMonitor::Clock::now();
     f.write("temporary");
     EXPECT_TRUE(w.poll(t0 + 5ms).empty());
     f.write("one");  // saved back as it was
@@ -62,11 +62,11 @@ TEST(FileWatch, WritingTheSameContentBackIsNoChange) {
     EXPECT_TRUE(w.poll(t0 + 300ms).empty());
 }
 
-TEST(FileWatch, AFileThatDisappearsAndComesBackCounts) {
+TEST(FileMonitor, AFileThatDisappearsAndComesBackCounts) {
     TempFile f;
-    FileWatch w(60ms);
-    w.watch({f.path.string()});
-    auto t0 = FileWatch::Clock::now();
+    FileMonitor w(60ms);
+    w.follow({f.path.string()});
+    auto t0 = FileMonitor::Clock::now();
     fs::remove(f.path);
     EXPECT_TRUE(w.poll(t0 + 5ms).empty());
     EXPECT_EQ(w.poll(t0 + 100ms).size(), 1u);  // gone, and stayed gone
