@@ -42,12 +42,7 @@ bool BlurMeasurement::prepare(Diagnostics& diags) {
     return true;
 }
 
-void BlurMeasurement::waitForGpu() const {
-    if (settings_.waitFor)
-        settings_.waitFor(renderer_, outputTexture_);
-    else
-        renderer_.finish();
-}
+void BlurMeasurement::waitForGpu() const { renderer_.finish(outputTexture_); }
 
 void BlurMeasurement::warmUp() {
     const auto warmStart = std::chrono::steady_clock::now();
@@ -58,7 +53,7 @@ void BlurMeasurement::warmUp() {
 }
 
 void BlurMeasurement::timeRun() {
-    if (!settings_.waitFor) {
+    if (!settings_.wallClock) {
         std::vector<PassTiming> t;
         renderer_.render(*values_, 0, &t);
         double sum = 0;

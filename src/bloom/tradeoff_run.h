@@ -62,13 +62,12 @@ struct TradeoffSettings {
     std::chrono::milliseconds warmUp{200};
     std::string folder;                    // where each method's script is written (method.glib)
     std::vector<std::string> includeDirs;  // the kernel files' folders: blurKernelDirs(dataDir)
-    // Unset (the desktop): each run is the sum of render()'s pass timings,
-    // GPU timer queries or glFinish and a wall clock. Set (the page): a run
-    // is the wall clock around the whole render(), from one waitFor to the
-    // next, since WebGL's finish() returns before the browser's GPU process
-    // has drawn anything; it must block until `texture` of the renderer
-    // holds what was drawn into it.
-    std::function<void(const Renderer&, int texture)> waitFor;
+    // False (the desktop): each run is the sum of render()'s pass timings,
+    // GPU timer queries or glFinish and a wall clock. True (the page): a run
+    // is the wall clock around the whole render(), from one
+    // Renderer::finish(output) to the next (in the browser that waits for
+    // the output target itself, WebGL's own finish() does not wait).
+    bool wallClock = false;
 };
 
 // One method on one renderer: prepare, warmUp, timeRun (repeat times),

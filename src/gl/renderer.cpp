@@ -409,7 +409,37 @@ Renderer::UniformKind Renderer::uniformKind(int program, const std::string& name
     return UniformKind::Unknown;
 }
 
-void Renderer::finish() const { gl_->Finish(); }
+void Renderer::finish(int texture) const {
+#ifdef __EMSCRIPTEN__
+    GLint draw = 0, read = 0;
+    gl_->GetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
+    gl_->GetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
+    const bool target = texture >= 0 && size_t(texture) < textures_.size() && textures_[size_t(texture)].id &&
+                        textures_[size_t(texture)].target == GL_TEXTURE_2D;
+    unsigned fbo = 0;
+    if (target) {
+        gl_->GenFramebuffers(1, &fbo);
+        gl_->BindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+        gl_->FramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                  textures_[size_t(texture)].id, 0);
+    } else {
+        gl_->BindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    }
+    if (target && textures_[size_t(texture)].floatData) {  // OpenGL ES reads a float target only as floats
+        float pixel[4];
+        gl_->ReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
+    } else {
+        unsigned char pixel[4];
+        gl_->ReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
+    }
+    gl_->BindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read));
+    gl_->BindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw));
+    if (fbo) gl_->DeleteFramebuffers(1, &fbo);
+#else
+    (void)texture;
+    gl_->Finish();
+#endif
+}
 
 bool Renderer::usesTimer(int program) const {
     return program >= 0 && size_t(program) < programs_.size() && programs_[size_t(program)] &&

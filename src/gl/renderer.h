@@ -111,8 +111,12 @@ public:
     // was not built): what a watch rewrites.
     std::vector<std::optional<std::string>> programTexts(int program) const;
 
-    // Waits until every GL command so far has finished (for wall-clock timing).
-    void finish() const;
+    // Waits until every GL command so far has run (for wall-clock timing):
+    // glFinish on the desktop. In the browser WebGL's finish() only flushes
+    // (Chromium runs the commands in its GPU process and does not wait), so
+    // there it reads one pixel, a real round trip: of `texture` (a target,
+    // through a framebuffer of its own) when one is given, else of the canvas.
+    void finish(int texture = -1) const;
     std::string rendererName() const;  // GL_RENDERER, e.g. "llvmpipe (LLVM 15.0.6, 256 bits)"
     // Whether pass timings come from GPU timer queries (a GPU) rather than
     // glFinish and a wall clock (a CPU renderer, where the queries mean nothing).

@@ -25,35 +25,12 @@ SlicedFrame Renderer::startFrame(const UniformValues& values, double time, std::
     return f;
 }
 
-namespace {
-
-// Waits until the GPU has done every command given so far, so a band's cost
-// is wall clock. In the browser, WebGL's finish() is only a flush (Chromium
-// runs the commands in its GPU process and does not wait): the page then
-// measured every band at ~0 ms, drew whole passes, and blocked its input
-// later anyway (issue 25). A one-pixel read of the canvas is a real round
-// trip there: every earlier command has run when it returns.
-void waitForGpu(const GlApi& gl) {
-#ifdef __EMSCRIPTEN__
-    GLint framebuffer = 0;
-    gl.GetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
-    unsigned char pixel[4];
-    gl.ReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
-    gl.BindFramebuffer(GL_FRAMEBUFFER, GLuint(framebuffer));
-#else
-    gl.Finish();
-#endif
-}
-
-}  // namespace
-
 bool Renderer::renderSlice(SlicedFrame& f, double budgetMs) {
     if (f.done || !plan_ || !screen_) return f.done = true;
     using Clock = std::chrono::steady_clock;
     msPerRow_.resize(plan_->passes.size(), 0.0);
     // What the UI drew since the last slice is not this frame's to pay for.
-    waitForGpu(*gl_);
+    finish();
     const auto sliceStart = Clock::now();
     auto spentMs = [&] { return std::chrono::duration<double, std::milli>(Clock::now() - sliceStart).count(); };
     bool drewABand = false;
@@ -90,7 +67,7 @@ bool Renderer::renderSlice(SlicedFrame& f, double budgetMs) {
         gl_->Scissor(0, f.row, target->width, rows);
         drawPass(pass, target, f.values, f.time);
         gl_->Disable(GL_SCISSOR_TEST);
-        waitForGpu(*gl_);  // the band's cost, and the budget, are wall clock
+        finish();  // the band's cost, and the budget, are wall clock (in the browser too: see finish())
         const double ms = std::chrono::duration<double, std::milli>(Clock::now() - bandStart).count();
         msPerRow_[f.pass] = ms / rows;
         f.passMs += ms;

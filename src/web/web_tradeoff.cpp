@@ -20,7 +20,6 @@
 // anything, so each run is the wall clock between two reads of one pixel of
 // the method's own target: a read returns only once every command before it
 // has run. That read's round trip is in every run, so times are upper bounds.
-#include <GLES3/gl3.h>
 #include <emscripten/emscripten.h>
 
 #include <chrono>
@@ -51,27 +50,6 @@ constexpr const char* kBundledLesson = "/lesson";
 // given in frames of at most about 100 ms each (at least one draw each).
 constexpr auto kWarmUpStep = std::chrono::milliseconds(100);
 constexpr int kWarmUpSteps = 2;
-
-// Blocks until `texture` holds what was drawn into it: one pixel of it read
-// through a framebuffer of this file's own, the bindings put back as they were.
-unsigned readFramebuffer = 0;
-void waitForTexture(const Renderer& renderer, int texture) {
-    GLint draw = 0, read = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &draw);
-    glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &read);
-    if (!readFramebuffer) glGenFramebuffers(1, &readFramebuffer);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, readFramebuffer);
-    glFramebufferTexture2D(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, renderer.textureName(texture), 0);
-    if (renderer.isFloatTexture(texture)) {
-        float pixel[4];
-        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_FLOAT, pixel);
-    } else {
-        unsigned char pixel[4];
-        glReadPixels(0, 0, 1, 1, GL_RGBA, GL_UNSIGNED_BYTE, pixel);
-    }
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, GLuint(read));
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(draw));
-}
 
 // One measuring run of the page, from start to its last row.
 struct Run {
@@ -187,7 +165,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_tradeoff_start(int width, int height, int repea
     r->settings.warmUp = kWarmUpStep;
     r->settings.folder = kFolder;
     r->settings.includeDirs = blurKernelDirs(kBundledLesson);
-    r->settings.waitFor = waitForTexture;
+    r->settings.wallClock = true;
     r->status = fmt::format("0/{}", r->methods.size());
     run = std::move(r);
     return int(run->methods.size());
@@ -228,8 +206,6 @@ EMSCRIPTEN_KEEPALIVE int glimmer_tradeoff_step() {
     if (run->rows.size() < run->methods.size()) return 1;
     // Done: the GL objects go, the rows stay for glimmer_tradeoff_rows.
     run->renderer.reset();
-    if (readFramebuffer) glDeleteFramebuffers(1, &readFramebuffer);
-    readFramebuffer = 0;
     return 0;
 }
 

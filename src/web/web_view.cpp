@@ -39,7 +39,6 @@
 //   glimmer_view_sets() -> every control's value now, "NAME=V;NAME=V1,V2".
 // The panel's width is pinned once measured, so messages never widen it.
 // Input (web_view_input.cpp) comes from the canvas's own events.
-#include <GLES3/gl3.h>
 #include <backends/imgui_impl_opengl3.h>
 #include <emscripten/emscripten.h>
 #include <imgui.h>
