@@ -185,6 +185,17 @@ inline const char* primitiveName(GLenum p) {
     }
 }
 
+// The RGBA8 picture of framebuffer `fbo`'s first attachment, row 0 at the top.
+inline Image readPicture(const GlApi& gl, unsigned fbo, int width, int height) {
+    Image img = Image::rgba8(width, height);
+    gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+    gl.ReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl.PixelStorei(GL_PACK_ALIGNMENT, 1);
+    gl.ReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
+    gl.BindFramebuffer(GL_FRAMEBUFFER, 0);
+    return flipRows(std::move(img));
+}
+
 // Reads a 2-D texture whole through a framebuffer of its own with
 // glReadPixels, rows bottom first as glGetTexImage gives them: OpenGL ES has
 // no glGetTexImage, and a watch's targets are read this way on both.

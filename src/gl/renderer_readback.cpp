@@ -9,13 +9,7 @@ using namespace renderer_detail;
 
 Image Renderer::readScreen() const {
     if (!screen_) return {};
-    Image img = Image::rgba8(screen_->width, screen_->height);
-    gl_->BindFramebuffer(GL_FRAMEBUFFER, screen_->fbo);
-    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_->ReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
-    gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
-    return flipRows(std::move(img));
+    return readPicture(*gl_, screen_->fbo, screen_->width, screen_->height);
 }
 
 std::string Renderer::contextFailure() const { return glimmer::contextFailure(*gl_); }

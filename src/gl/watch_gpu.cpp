@@ -28,8 +28,27 @@ void main() {
 }
 )";
 
-// The outputs of both reduction programs: per block, each component's
-// finite minimum and maximum, and the counts (as watchStats counts them).
+// What marks a pixel's value (as watchPicture marks it): a component that
+// is NaN, Inf, below or above the range; only its first n components count.
+const char* const kMarks = R"(
+void marksOf(vec4 v, int n, vec2 range, out bool nan, out bool inf, out bool below, out bool above) {
+    nan = false; inf = false; below = false; above = false;
+    for (int c = 0; c < 4; ++c) {
+        if (c >= n) break;
+        uint bits = floatBitsToUint(v[c]);
+        if ((bits & 0x7f800000u) == 0x7f800000u) {
+            if ((bits & 0x007fffffu) != 0u) nan = true; else inf = true;
+            continue;
+        }
+        below = below || v[c] < range.x;
+        above = above || v[c] > range.y;
+    }
+}
+)";
+
+// Both reduction programs: per block of the level below, each component's
+// finite minimum and maximum and the counts (as watchStats counts them),
+// each texel of the block handed to take(), which each program defines.
 const char* const kOutputs = R"(
 layout(location = 0) out vec4 oLo;
 layout(location = 1) out vec4 oHi;
@@ -37,14 +56,9 @@ layout(location = 2) out uvec4 oCount;  // drawn, line ran, NaN, Inf
 layout(location = 3) out uvec4 oMore;   // below, above, most components, largest kind
 const int kBlock = 4;
 const float kMax = 3.402823466e38;
+uniform ivec2 uSize;  // of the level read
 )";
-
-// The first level: the watched pass's two float targets.
-const char* const kLeaf = R"(
-uniform highp sampler2D uValue;
-uniform highp sampler2D uInfo;
-uniform ivec2 uSize;
-uniform vec2 uRange;  // below and above are counted against it
+const char* const kWalk = R"(
 void main() {
     ivec2 base = ivec2(gl_FragCoord.xy) * kBlock;
     vec4 lo = vec4(kMax), hi = vec4(-kMax);
@@ -52,37 +66,41 @@ void main() {
     for (int j = 0; j < kBlock; ++j) {
         for (int i = 0; i < kBlock; ++i) {
             ivec2 p = base + ivec2(i, j);
-            if (p.x >= uSize.x || p.y >= uSize.y) continue;
-            vec4 info = texelFetch(uInfo, p, 0);
-            if (!(info.x > 0.5)) continue;
-            count.x += 1u;
-            int n = clamp(int(floor(info.y * 4. + 0.5)), 0, 4);
-            if (n == 0) continue;
-            count.y += 1u;
-            more.z = max(more.z, uint(n));
-            more.w = max(more.w, uint(clamp(int(floor(info.z * 3. + 0.5)), 0, 3)));
-            vec4 v = texelFetch(uValue, p, 0);
-            bool nan = false, inf = false, below = false, above = false;
-            for (int c = 0; c < 4; ++c) {
-                if (c >= n) break;
-                uint bits = floatBitsToUint(v[c]);
-                if ((bits & 0x7f800000u) == 0x7f800000u) {
-                    if ((bits & 0x007fffffu) != 0u) nan = true; else inf = true;
-                    continue;
-                }
-                lo[c] = min(lo[c], v[c]);
-                hi[c] = max(hi[c], v[c]);
-                below = below || v[c] < uRange.x;
-                above = above || v[c] > uRange.y;
-            }
-            // One mark per pixel: NaN before Inf before the range.
-            if (nan) count.z += 1u;
-            else if (inf) count.w += 1u;
-            else if (below) more.x += 1u;
-            else if (above) more.y += 1u;
+            if (p.x < uSize.x && p.y < uSize.y) take(p, lo, hi, count, more);
         }
     }
     oLo = lo; oHi = hi; oCount = count; oMore = more;
+}
+)";
+
+// The first level: the watched pass's two targets.
+const char* const kLeaf = R"(
+uniform highp sampler2D uValue;
+uniform highp sampler2D uInfo;  // what is known, as fractions (shader/watch_rewrite.h)
+uniform vec2 uRange;  // below and above are counted against it
+void take(ivec2 p, inout vec4 lo, inout vec4 hi, inout uvec4 count, inout uvec4 more) {
+    vec4 info = texelFetch(uInfo, p, 0);
+    if (!(info.x > 0.5)) return;
+    count.x += 1u;
+    int n = clamp(int(floor(info.y * 4. + 0.5)), 0, 4);
+    if (n == 0) return;
+    count.y += 1u;
+    more.z = max(more.z, uint(n));
+    more.w = max(more.w, uint(clamp(int(floor(info.z * 3. + 0.5)), 0, 3)));
+    vec4 v = texelFetch(uValue, p, 0);
+    for (int c = 0; c < 4; ++c) {  // finite components only
+        if (c >= n) break;
+        if ((floatBitsToUint(v[c]) & 0x7f800000u) == 0x7f800000u) continue;
+        lo[c] = min(lo[c], v[c]);
+        hi[c] = max(hi[c], v[c]);
+    }
+    bool nan, inf, below, above;
+    marksOf(v, n, uRange, nan, inf, below, above);
+    // One mark per pixel: NaN before Inf before the range.
+    if (nan) count.z += 1u;
+    else if (inf) count.w += 1u;
+    else if (below) more.x += 1u;
+    else if (above) more.y += 1u;
 }
 )";
 
@@ -92,23 +110,12 @@ uniform highp sampler2D uLo;
 uniform highp sampler2D uHi;
 uniform highp usampler2D uCount;
 uniform highp usampler2D uMore;
-uniform ivec2 uSize;
-void main() {
-    ivec2 base = ivec2(gl_FragCoord.xy) * kBlock;
-    vec4 lo = vec4(kMax), hi = vec4(-kMax);
-    uvec4 count = uvec4(0u), more = uvec4(0u);
-    for (int j = 0; j < kBlock; ++j) {
-        for (int i = 0; i < kBlock; ++i) {
-            ivec2 p = base + ivec2(i, j);
-            if (p.x >= uSize.x || p.y >= uSize.y) continue;
-            lo = min(lo, texelFetch(uLo, p, 0));
-            hi = max(hi, texelFetch(uHi, p, 0));
-            count += texelFetch(uCount, p, 0);
-            uvec4 m = texelFetch(uMore, p, 0);
-            more = uvec4(more.xy + m.xy, max(more.zw, m.zw));
-        }
-    }
-    oLo = lo; oHi = hi; oCount = count; oMore = more;
+void take(ivec2 p, inout vec4 lo, inout vec4 hi, inout uvec4 count, inout uvec4 more) {
+    lo = min(lo, texelFetch(uLo, p, 0));
+    hi = max(hi, texelFetch(uHi, p, 0));
+    count += texelFetch(uCount, p, 0);
+    uvec4 m = texelFetch(uMore, p, 0);
+    more = uvec4(more.xy + m.xy, max(more.zw, m.zw));
 }
 )";
 
@@ -131,17 +138,8 @@ void main() {
     vec4 v = texelFetch(uValue, p, 0);
     int n = info.x > 0.5 ? clamp(int(floor(info.y * 4. + 0.5)), 0, 4) : 0;
     int mark = info.x > 0.5 ? (n == 0 ? 5 : 0) : 6;
-    bool nan = false, inf = false, below = false, above = false;
-    for (int c = 0; c < 4; ++c) {
-        if (c >= n) break;
-        uint bits = floatBitsToUint(v[c]);
-        if ((bits & 0x7f800000u) == 0x7f800000u) {
-            if ((bits & 0x007fffffu) != 0u) nan = true; else inf = true;
-            continue;
-        }
-        below = below || v[c] < uRange.x;
-        above = above || v[c] > uRange.y;
-    }
+    bool nan, inf, below, above;
+    marksOf(v, n, uRange, nan, inf, below, above);
     if (mark == 0) mark = nan ? 1 : inf ? 2 : below ? 3 : above ? 4 : 0;
     if (mark != 0) {
         int row = uHeight - 1 - p.y;  // the checker counts rows from the top, as the picture's rows go
@@ -155,9 +153,11 @@ void main() {
 }
 )";
 
-std::string versioned(const GlApi& gl, const char* body, const char* more = "") {
-    return std::string(gl.es ? "#version 300 es\nprecision highp float;\nprecision highp int;\n" : "#version 330\n") +
-           more + body;
+// The parts of a program's text after the #version its context takes.
+std::string versioned(const GlApi& gl, std::initializer_list<const char*> parts) {
+    std::string out = gl.es ? "#version 300 es\nprecision highp float;\nprecision highp int;\n" : "#version 330\n";
+    for (const char* p : parts) out += p;
+    return out;
 }
 
 void makeTexture(const GlApi& gl, unsigned id, GLenum internal, GLenum format, GLenum type, int w, int h) {
@@ -261,10 +261,10 @@ bool Renderer::bindWatchTargets(int width, int height, bool depth) {
     }
     if (!w.built) {
         w.built = true;
-        const std::string vertex = versioned(*gl_, kVertex);
-        w.leaf = buildPlainProgram(*gl_, vertex, versioned(*gl_, kLeaf, kOutputs));
-        w.merge = buildPlainProgram(*gl_, vertex, versioned(*gl_, kMerge, kOutputs));
-        w.colour = buildPlainProgram(*gl_, vertex, versioned(*gl_, kColour));
+        const std::string vertex = versioned(*gl_, {kVertex});
+        w.leaf = buildPlainProgram(*gl_, vertex, versioned(*gl_, {kOutputs, kMarks, kLeaf, kWalk}));
+        w.merge = buildPlainProgram(*gl_, vertex, versioned(*gl_, {kOutputs, kMerge, kWalk}));
+        w.colour = buildPlainProgram(*gl_, vertex, versioned(*gl_, {kMarks, kColour}));
     }
     return w.leaf && w.merge && w.colour;
 }
@@ -360,13 +360,7 @@ Image Renderer::readWatchPicture() const {
     if (!watchGpu_ || !watchGpu_->drawn || !uploaded_ || uploaded_->width != watchGpu_->width ||
         uploaded_->height != watchGpu_->height)
         return {};
-    Image img = Image::rgba8(uploaded_->width, uploaded_->height);
-    gl_->BindFramebuffer(GL_FRAMEBUFFER, uploaded_->fbo);
-    gl_->ReadBuffer(GL_COLOR_ATTACHMENT0);
-    gl_->PixelStorei(GL_PACK_ALIGNMENT, 1);
-    gl_->ReadPixels(0, 0, img.width, img.height, GL_RGBA, GL_UNSIGNED_BYTE, img.u8.data());
-    gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
-    return flipRows(std::move(img));
+    return readPicture(*gl_, uploaded_->fbo, uploaded_->width, uploaded_->height);
 }
 
 WatchCapture Renderer::readWatchCapture(int x, int y, int w, int h) const {
