@@ -15,7 +15,9 @@
 //     (surrogate pairs included) and refuses text that is not valid UTF-8.
 //   - Keys stay in the order they were set in (ordered_json): people read
 //     these lines too.
-// Desktop only: the browser build writes and reads no JSON of its own.
+// Desktop only: the browser build does not link nlohmann. One JSON text of
+// the page's is still written by hand, its Measure blurs rows
+// (web/web_tradeoff.cpp, infinity as null); issue 38 asks for it to come here.
 #pragma once
 #include <string>
 
