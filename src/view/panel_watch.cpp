@@ -10,6 +10,12 @@ namespace glimmer {
 
 namespace {
 
+// Where the last item drawn is, under `name`, for tests that click it.
+void remember(ViewerState& s, const char* name) {
+    const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    s.controlRects[name] = {at.x, at.y, size.x, size.y};
+}
+
 ViewCommand watchCommand(std::string text, bool range = false) {
     ViewCommand c;
     c.kind = ViewCommand::Kind::Watch;
@@ -33,13 +39,15 @@ void watchControls(ViewerState& s, std::vector<ViewCommand>& asked) {
     ImGui::SetNextItemWidth(em * 14);
     bool enter = ImGui::InputTextWithHint("##watch", "watch: bloom.frag:12 rgbblur", field, sizeof field,
                                           ImGuiInputTextFlags_EnterReturnsTrue);
-    ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-    s.controlRects["Watch"] = {at.x, at.y, size.x, size.y};
+    remember(s, "Watch");
     ImGui::SameLine();
-    if (ImGui::Button("Watch") || enter) asked.push_back(watchCommand(field));
+    const bool watch = ImGui::Button("Watch");
+    remember(s, "Watch button");
+    if (watch || enter) asked.push_back(watchCommand(field));
     if (s.watch) {
         ImGui::SameLine();
         if (ImGui::Button("Stop")) asked.push_back(watchCommand("off"));
+        remember(s, "Stop");
     }
     // Idle, the field is all (its hint says what to type): one line of the
     // panel, so the sliders stay where the projector shows them.
@@ -62,11 +70,14 @@ void watchControls(ViewerState& s, std::vector<ViewCommand>& asked) {
     static float range[2] = {0.f, 1.f};
     ImGui::SetNextItemWidth(em * 8);
     ImGui::InputFloat2("##range", range, "%.3g");
+    remember(s, "Watch range");
     ImGui::SameLine();
     if (ImGui::Button("Fix range") && range[0] < range[1])
         asked.push_back(watchCommand(fmt::format("{},{}", range[0], range[1]), true));
+    remember(s, "Fix range");
     ImGui::SameLine();
     if (ImGui::Button("Own range")) asked.push_back(watchCommand("auto", true));
+    remember(s, "Own range");
     // The marker colours, so a checker in the picture can be read.
     for (const WatchMarker& m : kWatchMarkers) {
         ImGui::ColorButton(m.name, ImVec4(m.r / 255.f, m.g / 255.f, m.b / 255.f, 1.f), ImGuiColorEditFlags_NoTooltip,

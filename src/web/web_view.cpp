@@ -37,6 +37,7 @@
 //   glimmer_view_errors() -> how many errors the panel shows (0: the last load
 //       worked).
 //   glimmer_view_sets() -> every control's value now, "NAME=V;NAME=V1,V2".
+//   glimmer_view_watch() -> the watch: spec, summary, refusal, tab-separated.
 // The panel's width is pinned once measured, so messages never widen it.
 // Input (web_view_input.cpp) comes from the canvas's own events.
 #include <backends/imgui_impl_opengl3.h>
@@ -50,6 +51,7 @@
 #include <fstream>
 #include <memory>
 #include <set>
+#include <iostream>
 #include <sstream>
 #include <string>
 
@@ -212,6 +214,15 @@ void pinPanelWidth(WebViewer& v) {
 int applyAsked(WebViewer& v, const std::vector<ViewCommand>& asked) {
     int out = 0;
     for (const auto& c : asked) {
+        // What only changes what is shown (the watch's buttons and field
+        // among them, issue 39) is the core's, as in the window; what it says
+        // goes to the browser's console, as the window's goes to stderr.
+        if (std::string said; v.core.apply(c, said)) {
+            std::istringstream lines(said);
+            for (std::string line; std::getline(lines, line);) std::cout << "glimmer view: " << line << "\n";
+            std::cout << std::flush;
+            continue;
+        }
         if (c.kind == ViewCommand::Kind::Reload) out |= 1;
         if (c.kind != ViewCommand::Kind::Save || !v.s.renderer) continue;
         glimmer_web::pagePicture() = v.core.savedPicture(c.unit == -2);
@@ -332,6 +343,15 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_value(const char* name) {
     const Plan& plan = viewer->s.good->plan;
     for (size_t p = 0; p < plan.programs.size() && text.empty(); ++p)
         for (double x : viewer->s.values->get(int(p), name)) text += (text.empty() ? "" : " ") + fmt::format("{:g}", x);
+    return text.c_str();
+}
+
+// The watch now, for tests: its spec, its summary and why the last one
+// asked for was refused, tab-separated (each empty when there is none).
+EMSCRIPTEN_KEEPALIVE const char* glimmer_view_watch() {
+    static std::string text;
+    text.clear();
+    if (viewer) text = viewer->s.watchSpec + "\t" + viewer->s.watchSummary + "\t" + viewer->s.watchError;
     return text.c_str();
 }
 

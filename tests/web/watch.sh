@@ -53,6 +53,25 @@ print("\t".join([c["script"], c["shader"], str(c["line"]), c["expression"], str(
   tally $? "$shader:$line $expression: the page's watch is not the desktop's render --watch"
 done
 
+# The panel's watch controls, clicked as a student would (issue 39: in the
+# page they did nothing, and the checks above drive the watch by command):
+# the Watch field typed into and its button, the range's two fields typed
+# into and Fix range, then Own range, then Stop; each does what its command does.
+clicks="$(NODE_PATH=/usr/share/nodejs timeout 300 node tools/page-watch-controls.mjs "file://$page" scripts/bloom.glib \
+  'bloom.frag:12 rgbblur' 0.25 0.75 2> "$pictures/clicks.err")"
+echo "  clicked: $clicks"
+[ -n "$clicks" ] || cat "$pictures/clicks.err"
+step() { python3 -c 'import json, sys; print(json.loads(sys.argv[1])[sys.argv[2]][sys.argv[3]])' "$clicks" "$1" "$2" 2>/dev/null; }
+[ "$(step typed spec)" = "bloom.frag:12 rgbblur" ] && [[ "$(step typed summary)" == "vec3 over "*"(its own)"* ]] &&
+  [ -z "$(step typed error)" ]
+tally $? "typing a watch into the panel's field and clicking Watch did not watch it: $(step typed summary)"
+[[ "$(step fixed summary)" == *"range 0.25 .. 0.75 (fixed)"* ]]
+tally $? "the range typed into the panel's fields and Fix range did not fix it: $(step fixed summary)"
+[[ "$(step own summary)" == *"(its own)"* ]]
+tally $? "Own range did not give the values' own range back: $(step own summary)"
+[ -n "$(step stopped spec)" ] && [ -z "$(step stopped summary)" ]
+tally $? "Stop did not stop the watch: $(step stopped summary)"
+
 # A refusal, in the words of the command line.
 want="$("$g" check scripts/bloom.glib --watch 'bloom.frag:11:rgbblur' 2>&1 | grep -A2 ': error: ')"
 got="$(python3 -c 'import json, sys; print(json.load(open(sys.argv[1]))["refusal"])' "$pictures/page.json")"

@@ -399,6 +399,11 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     control: (name) => viewControl(name).split(" ").filter(Boolean).map(Number),
     drawn: () => viewDrawn(),
     probe: () => glimmer.UTF8ToString(glimmer._glimmer_view_probe()),
+    // The watch: { spec, summary, error } (each "" when there is none).
+    watch: () => {
+      const [spec = "", summary = "", error = ""] = glimmer.UTF8ToString(glimmer._glimmer_view_watch()).split("\t");
+      return { spec, summary, error };
+    },
     // One of `glimmer view`'s commands (set, show, values, probe X Y, split,
     // save, frames...) through the same viewer core; what the window would
     // print for it. A save keeps the picture for Save PNG (and snapshot()).
