@@ -61,6 +61,19 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         }
         return c;
     }
+    if (word == "where") {  // the rest of the line: a control's name may hold spaces ("Fix range")
+        std::string rest;
+        std::getline(in, rest);
+        rest.erase(0, rest.find_first_not_of(" \t"));
+        while (!rest.empty() && (rest.back() == ' ' || rest.back() == '\t' || rest.back() == '\r')) rest.pop_back();
+        if (rest.empty()) {
+            error = "usage: where CONTROL (a slider's uniform, Watch, Watch button, Stop, Fix range, Own range, Probe)";
+            return std::nullopt;
+        }
+        c.kind = ViewCommand::Kind::Where;
+        c.name = rest;
+        return c;
+    }
     std::vector<std::string> args;
     for (std::string a; in >> a;) args.push_back(a);
     auto want = [&](size_t n, const char* usage) {
@@ -146,7 +159,7 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         if (!want(0, "quit")) return std::nullopt;
         c.kind = ViewCommand::Kind::Quit;
     } else {
-        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, watch, scale, help, frames, quit)";
+        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, watch, where, scale, help, frames, quit)";
         return std::nullopt;
     }
     return c;

@@ -280,6 +280,14 @@ bool ViewerCore::apply(const ViewCommand& c, std::string& said) {
         else said = "probe " + s_.probeText;
         return true;
     case ViewCommand::Kind::Watch: applyWatch(c, said); return true;
+    case ViewCommand::Kind::Where: {  // for a test or a script that clicks the panel as a person would
+        auto it = s_.controlRects.find(c.name);
+        said = it == s_.controlRects.end()
+                   ? fmt::format("where: no control '{}' in the panel now", c.name)
+                   : fmt::format("where {} at {:g} {:g} {:g} {:g}", c.name, it->second[0], it->second[1], it->second[2],
+                                 it->second[3]);
+        return true;
+    }
     case ViewCommand::Kind::Split:
         if (c.on && textureOnUnit("split", c.unit, s_.compareLeft, said) &&
             textureOnUnit("split", c.right, s_.compareRight, said))

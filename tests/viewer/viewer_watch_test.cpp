@@ -1,16 +1,21 @@
 // A watch in the viewer (issue 28): the same picture `render --watch` writes,
 // drawn again as a slider moves; the probe reads its floats; a refusal is
-// said as the command line says it; watch off brings the picture back.
+// said as the command line says it; watch off brings the picture back; the
+// panel's watch controls, clicked and typed into, do what the commands do.
 #include <sys/wait.h>
 
 #include <cstdlib>
 #include <fstream>
+#include <map>
+#include <thread>
+#include <sstream>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "seed_project.h"
 #include "viewer_process.h"
+#include "x11_driver.h"
 
 namespace fs = std::filesystem;
 using namespace glimmer_viewer;
@@ -109,6 +114,53 @@ TEST(ViewerWatch, ARefusalIsSaidAsTheCommandLineSaysItAndAnEditIsWatchedAgain) {
                                   "-o edited_render.png 2>/dev/null >/dev/null", p.dir.string(), GLIMMER_BIN);
     ASSERT_EQ(std::system(cmd.c_str()), 0);
     EXPECT_EQ(readBytes(p.dir / "edited.png"), readBytes(p.dir / "edited_render.png"));
+}
+
+// The panel's watch controls used as a person would (xdotool clicks and
+// typing on the virtual X server), each found with the viewer's `where`:
+// the field typed into and Watch, the range's fields and Fix range, Own
+// range, Stop; each does what its command does (the page: tests/web/watch.sh).
+TEST(ViewerWatch, ThePanelsWatchControlsClickedDoWhatTheirCommandsDo) {
+    Project p;
+    ViewerProcess v({"bloom.glib", "--size", "256x256"}, p.dir);
+    ASSERT_TRUE(v.waitForLog("glimmer view: ui scale")) << v.log();
+    auto x = findViewer(p.dir);
+    ASSERT_TRUE(x) << v.log();
+    std::map<std::string, int> asked;  // how often each control's place was asked for
+    // Clicks `name` at `fraction` of its width, where the viewer says it is now.
+    auto click = [&](const std::string& name, double fraction = 0.5) {
+        v.send("where " + name);
+        const std::string said = "glimmer view: where " + name + " at ";
+        if (!v.waitForLog(said, ++asked[name])) return false;
+        const std::string log = v.log();
+        double cx = 0, cy = 0, w = 0, h = 0;
+        std::istringstream in(log.substr(log.rfind(said) + said.size()));
+        if (!(in >> cx >> cy >> w >> h)) return false;
+        xdotool(*x, fmt::format("mousemove --window {} {} {} sleep 0.2 click 1 sleep 0.3", x->window,
+                                int(cx + fraction * w), int(cy + h / 2)));
+        return true;
+    };
+    auto type = [&](const std::string& text) {
+        xdotool(*x, fmt::format("type --delay 30 '{}'", text));  // `type` takes every word after it as text
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+    };
+    ASSERT_TRUE(click("Watch")) << v.log();
+    type("bloom.frag:12 rgbblur");
+    ASSERT_TRUE(click("Watch button")) << v.log();
+    ASSERT_TRUE(v.waitForLog("glimmer view: watch bloom.frag:12 rgbblur, pass 2 (Program Bloom): vec3 over 256x256: "
+                             "range 0 .. 1 (its own)")) << v.log();
+    for (auto [fraction, value] : {std::pair{0.2, "0.25"}, std::pair{0.7, "0.75"}}) {
+        ASSERT_TRUE(click("Watch range", fraction)) << v.log();
+        xdotool(*x, "key End BackSpace BackSpace BackSpace BackSpace BackSpace BackSpace BackSpace BackSpace sleep 0.2");
+        type(value);
+    }
+    ASSERT_TRUE(click("Fix range")) << v.log();
+    ASSERT_TRUE(v.waitForLog("vec3 over 256x256: range 0.25 .. 0.75 (fixed)")) << v.log();
+    ASSERT_TRUE(click("Own range")) << v.log();
+    ASSERT_TRUE(v.waitForLog("range 0 .. 1 (its own)", 2)) << v.log();
+    ASSERT_TRUE(click("Stop")) << v.log();
+    ASSERT_TRUE(v.waitForLog("glimmer view: watch: off")) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
 }
 
 }  // namespace
