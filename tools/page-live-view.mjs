@@ -8,7 +8,7 @@
 // reload of the page, Revert. Writes OUT_DIR/slider-NAME.png (the picture
 // after each slider) and OUT_DIR/broken.png (after the typo), and prints
 // one JSON object: { sliders: [{ name, value, drawn }], saved, broken, clicked,
-// reloaded, restored }, each of the last four the page's state then
+// reloaded, restored, selection }, each of broken to restored the page's state then
 // (exit, errors, value, diagnostics, the editor's file, cursor line,
 // marked lines and messages, text).
 // With SHEET=NAME=V1,V2,... in the environment, the page's Save sheet too
@@ -135,5 +135,10 @@ await page.evaluate(`document.getElementById("revert").click()`);
 await settle();
 result.restored = await state();
 result.restored.kept = await page.evaluate(`Object.keys(localStorage).filter((k) => k.startsWith("glimmer-draft")).length`);
+// Selected text in the editor (issue 39: light on light): the colours of
+// the selection's background and of the text over it, the editor focused.
+result.selection = await page.evaluate(`(() => { const cm = glimmerPage.editor().cm; cm.focus(); cm.execCommand("selectAll");
+  const sel = document.querySelector(".CodeMirror-selected"), line = document.querySelector(".CodeMirror-line");
+  return { background: sel ? getComputedStyle(sel).backgroundColor : "", text: line ? getComputedStyle(line).color : "" }; })()`);
 console.log(JSON.stringify(result));
 page.close(0);

@@ -42,6 +42,20 @@ for pair in "slider-uAdd.png|live_add.png|uAdd=$add" "slider-uHalfSize.png|live_
     echo "DIFFERS: the live view after its slider ($what) is not render's picture with --set"
   fi
 done
+# Selected text in the editor is readable (issue 39: it was light on light):
+# the text's colour against the selection's, at least WCAG's 4.5:1.
+python3 - "$(field 'selection["background"]')" "$(field 'selection["text"]')" <<'PY'
+import re, sys
+def lum(css):
+    r, g, b = (int(v) / 255 for v in re.findall(r"\d+", css)[:3])
+    f = lambda c: c / 12.92 if c <= 0.03928 else ((c + 0.055) / 1.055) ** 2.4
+    return 0.2126 * f(r) + 0.7152 * f(g) + 0.0722 * f(b)
+a, b = sorted((lum(sys.argv[1]), lum(sys.argv[2])), reverse=True)
+ratio = (a + 0.05) / (b + 0.05)
+print(f"  selected text: {sys.argv[2]} on {sys.argv[1]}, contrast {ratio:.1f}:1")
+sys.exit(0 if ratio >= 4.5 else 1)
+PY
+tally $? "selected text in the editor is hard to read: $(field 'selection')"
 # The probe (the viewer core's, as the desktop's): ticked in the panel, the
 # pointer on pixel (100, 200), its text gives that pixel of render's picture
 # (issue 25: the page's probe did nothing).
