@@ -8,7 +8,7 @@
 // reload of the page, Revert. Writes OUT_DIR/slider-NAME.png (the picture
 // after each slider) and OUT_DIR/broken.png (after the typo), and prints
 // one JSON object: { sliders: [{ name, value, drawn }], saved, broken, clicked,
-// reloaded, restored, selection }, each of broken to restored the page's state then
+// reloaded, restored, untyped, selection }, each of broken to restored the page's state then
 // (exit, errors, value, diagnostics, the editor's file, cursor line,
 // marked lines and messages, text).
 // With SHEET=NAME=V1,V2,... in the environment, the page's Save sheet too
@@ -135,6 +135,17 @@ await page.evaluate(`document.getElementById("revert").click()`);
 await settle();
 result.restored = await state();
 result.restored.kept = await page.evaluate(`Object.keys(localStorage).filter((k) => k.startsWith("glimmer-draft")).length`);
+// A typo typed and taken back (issue 39: it still counted as an edit): the
+// text is the folder's again, so nothing is kept.
+await page.evaluate(`glimmerPage.editor().open(${JSON.stringify(shader)}, ${Number(line)}, 1);
+  glimmerPage.editor().cm.setCursor({ line: ${Number(line) - 1}, ch: 10000 }); glimmerPage.editor().cm.focus()`);
+await page.send("Input.insertText", { text: "x" });
+await sleep(500);
+for (const type of ["keyDown", "keyUp"])
+  await page.send("Input.dispatchKeyEvent", { type, key: "Backspace", code: "Backspace", windowsVirtualKeyCode: 8 });
+await settle();
+result.untyped = { kept: await page.evaluate(`Object.keys(localStorage).filter((k) => k.startsWith("glimmer-draft")).length`),
+                   note: await page.evaluate(`document.getElementById("edit-note").textContent`) };
 // Selected text in the editor (issue 39: light on light): the colours of
 // the selection's background and of the text over it, the editor focused.
 result.selection = await page.evaluate(`(() => { const cm = glimmerPage.editor().cm; cm.focus(); cm.execCommand("selectAll");

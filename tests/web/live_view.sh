@@ -42,6 +42,9 @@ for pair in "slider-uAdd.png|live_add.png|uAdd=$add" "slider-uHalfSize.png|live_
     echo "DIFFERS: the live view after its slider ($what) is not render's picture with --set"
   fi
 done
+# A typo typed and taken back leaves no kept edit (issue 39: it counted as one).
+[ "$(field 'untyped["kept"]')" = "0" ]
+tally $? "a typo typed and taken back is still kept as an edit: $(field 'untyped')"
 # Selected text in the editor is readable (issue 39: it was light on light):
 # the text's colour against the selection's, at least WCAG's 4.5:1.
 python3 - "$(field 'selection["background"]')" "$(field 'selection["text"]')" <<'PY'

@@ -84,8 +84,14 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
     const text = cm.getValue();
     if (!(shown in originals)) originals[shown] = readFile(abs(shown));  // the file system has not seen this edit yet
     writeFile(abs(shown), text);
-    try { localStorage.setItem(key(shown), text); say(`${shown}: edited (kept in this browser until saved)`); }
-    catch { say(`${shown}: edited, but the browser's storage is full: save it to keep it`, true); }
+    if (text === originals[shown]) {  // a typo taken back: the folder's text again, nothing to keep (issue 39)
+      localStorage.removeItem(key(shown));
+      delete originals[shown];
+      say(`${shown}: as the folder has it`);
+    } else {
+      try { localStorage.setItem(key(shown), text); say(`${shown}: edited (kept in this browser until saved)`); }
+      catch { say(`${shown}: edited, but the browser's storage is full: save it to keep it`, true); }
+    }
     clearTimeout(pending);
     pending = setTimeout(() => onEdit(shown), 350);
   });
@@ -154,6 +160,11 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
         const path = k.slice((kDraftPrefix + folder + "\n").length);
         let original;
         try { original = readFile(abs(path)); } catch { continue; }  // only files the folder has
+        if (localStorage.getItem(k) === original) {  // kept before a typo was taken back: no edit
+          localStorage.removeItem(k);
+          --i;
+          continue;
+        }
         if (!(path in originals)) originals[path] = original;
         writeFile(abs(path), localStorage.getItem(k));
         restored.push(path);
