@@ -42,10 +42,13 @@ const type = async (text) => {
 // Backspace as often as the field can hold characters, then the new text.
 const retype = async (at, text) => {
   await clickAt(page, at, frames);
+  // The panel reads a key as held at a frame's start: down for a few frames,
+  // then up for a few, or a press between two frames is never seen.
   const key = async (k) => {
     await page.send("Input.dispatchKeyEvent", { type: "keyDown", key: k, code: k, windowsVirtualKeyCode: k === "End" ? 35 : 8 });
+    await sleep(60);
     await page.send("Input.dispatchKeyEvent", { type: "keyUp", key: k, code: k, windowsVirtualKeyCode: k === "End" ? 35 : 8 });
-    await sleep(40);  // a frame each: ImGui repeats a held key, it does not count presses within one frame
+    await sleep(60);
   };
   await key("End");
   for (let i = 0; i < 12; ++i) await key("Backspace");
