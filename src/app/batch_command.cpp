@@ -15,7 +15,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "app/grade_batch.h"
 #include "process/batch.h"
 #include "pipeline/console.h"

@@ -9,7 +9,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "app/grade_batch.h"
 #include "pipeline/console.h"
 #include "grade/grade_merge.h"

@@ -1,6 +1,6 @@
 #include <iostream>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "process/session.h"
 #include "pipeline/watch.h"
 #include "pipeline/web_check.h"

@@ -11,7 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "process/child_guard.h"
 #include "process/watchdog.h"
 #include "app/help_text.h"

@@ -6,7 +6,7 @@
 
 #include <fmt/format.h>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "pipeline/console.h"
 #include "pipeline/numeric_health.h"
 #include "process/output_guard.h"

@@ -2,7 +2,7 @@
 // --sandbox, --max-memory and --timeout, shared by render, check and sheet.
 #include <CLI/CLI.hpp>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 
 namespace glimmer {
 

@@ -8,7 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "process/output_guard.h"
 #include "process/session.h"
 #include "sheet/sheet_drawing.h"

@@ -14,7 +14,7 @@
 #include <CLI/CLI.hpp>
 #include <fmt/format.h>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "app/tradeoff_report.h"
 #include "backends/context.h"
 #include "bloom/blur_methods.h"

@@ -5,7 +5,7 @@
 
 #include <fmt/format.h>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "pipeline/console.h"
 #include "pipeline/watch.h"
 #include "process/session.h"

@@ -1,4 +1,4 @@
-// What the page's entry points share (web_check.cpp, web_render.cpp,
+// What the page's entry points share (page_check.cpp, web_render.cpp,
 // web_view.cpp, web_view_input.cpp): one WebGL 2 context on #canvas for the
 // page's life, the last picture handed to the page, the last diagnostics.
 #pragma once

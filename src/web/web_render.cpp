@@ -16,7 +16,7 @@
 //       the last drawn script, each finished before the clock stops (a
 //       one-pixel read: WebGL's finish returns before the GPU process has
 //       drawn); -1 when none is drawn. The page's figure against the desktop's (PERFORMANCE.md).
-//   glimmer_last_output() (web_check.cpp) -> the diagnostics, as the desktop
+//   glimmer_last_output() (page_check.cpp) -> the diagnostics, as the desktop
 //       prints them
 #include <emscripten/emscripten.h>
 

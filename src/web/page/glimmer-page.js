@@ -1,4 +1,4 @@
-// The page's side of src/web/web_check.cpp and web_render.cpp: lists the
+// The page's side of src/web/page_check.cpp and web_render.cpp: lists the
 // lesson's scripts, checks or draws the chosen one, shows the diagnostics
 // as the desktop prints them.
 //

@@ -1,6 +1,9 @@
+// Each subcommand's options on the command line (CLI11): add*Command wires
+// one subcommand's flags to its options struct (app/subcommands.h). Not
+// pipeline/options.cpp, which holds the parsing every front end shares.
 #include <CLI/CLI.hpp>
 
-#include "app/commands.h"
+#include "app/subcommands.h"
 #include "view/viewer.h"
 
 namespace glimmer {
