@@ -158,6 +158,106 @@ std::vector<std::string> pictureStems(const std::vector<Submission>& subs) {
     return out;
 }
 
+// A student who handed in twice (a folder and a zip of it): both are
+// graded, and said, never silently as NAME-2 (issue 29): here, and in each
+// of their rows, where the teacher reads (the generated class of
+// tools/grading-class.py: lena and lena-2 were two plain passes). Returns
+// submission path -> the note its row takes.
+std::map<std::string, std::string> handedInMoreThanOnce(const std::vector<Submission>& subs) {
+    std::map<std::string, std::string> handedInTwice;
+    for (size_t i = 0, j = 0; i < subs.size(); i = j) {
+        std::string files, paths;
+        for (j = i; j < subs.size() && subs[j].name == subs[i].name; ++j) {
+            fs::path p = fs::path(subs[j].path).lexically_normal();
+            if (p.filename().empty()) p = p.parent_path();  // "class/lena/"
+            files += (files.empty() ? "" : ", ") + p.filename().string();
+            paths += (paths.empty() ? "" : ", ") + subs[j].path;
+        }
+        if (j - i < 2) continue;
+        for (size_t k = i; k < j; ++k)
+            handedInTwice[subs[k].path] = fmt::format("handed in more than once ({}); each is a row of its own", files);
+        std::cerr << fmt::format("glimmer: warning: {} handed in more than once ({}); each is graded, as a row of its "
+                                 "own\n", sanitizeForTerminal(subs[i].name, false), sanitizeForTerminal(paths, false));
+    }
+    return handedInTwice;
+}
+
+// Whether the grading in `out` (its grading.txt, if any) was made with the
+// same solution, settings, thresholds and sandbox as `header`; says why not.
+bool sameGradingAsBefore(const fs::path& out, const ReportHeader& header, const std::string& outputDir) {
+    if (!fs::exists(out / "grading.txt")) return true;
+    std::string text, why;
+    ReportHeader before;
+    std::vector<std::string> beforeStudents;
+    if (!readRegularFile((out / "grading.txt").string(), 1 << 24, text, why) ||
+        !parseRunHeader(text, before, beforeStudents, why)) {
+        std::cerr << fmt::format("glimmer: error: --resume: {}: {}\n", (out / "grading.txt").string(), why);
+        return false;
+    }
+    if (before.solution != header.solution || before.settings != header.settings ||
+        before.thresholds != header.thresholds || before.sandbox != header.sandbox ||
+        before.solutionContent != header.solutionContent) {
+        std::cerr << fmt::format("glimmer: error: --resume: {} was graded with another solution{}, settings, "
+                                 "thresholds or sandbox; grade it again without --resume, or into another -o\n",
+                                 outputDir,
+                                 before.solution == header.solution && before.solutionContent != header.solutionContent
+                                     ? " (the same name, other content)"
+                                     : "");
+        return false;
+    }
+    return true;
+}
+
+// A submission's row from what its worker drew: an error that says where it
+// stopped, or the verdict of its pictures against the solution's at each
+// setting (the worst setting's pictures, the student's and the solution's
+// in `solutionOutputs`, linked). Student, submission and script are the
+// caller's to fill.
+GradeRow rowOf(const BatchResult& result, const std::vector<Setting>& settings, const std::vector<Image>& solutionPictures,
+               const std::vector<std::string>& solutionOutputs, const std::vector<std::string>& solutionSliders,
+               const Thresholds& thresholds, const fs::path& out) {
+    GradeRow r;
+    r.diagnostics = result.diagnostics;
+    r.seconds = result.ms / 1000.0;
+    if (result.written.size() != settings.size()) {
+        r.verdict = "error";
+        r.notes = failureNote(result.diagnostics);
+        if (r.notes == "timed out" || r.notes == "the renderer crashed") {
+            // Where it stopped, as the worker last said (process/batch_worker.h).
+            const int k = result.stoppedAt;
+            r.notes += k == BatchResult::kStoppedPreparing ? std::string(" while loading and compiling")
+                       : k >= 0 && size_t(k) < settings.size()
+                           ? fmt::format(" at setting {} ({} of {})", settingLabel(settings[size_t(k)]), k + 1,
+                                         settings.size())
+                           : std::string();
+        }
+        return r;
+    }
+    std::vector<Comparison> comparisons;
+    for (size_t k = 0; k < settings.size(); ++k) {
+        Image student;
+        std::string why;
+        loadImage(result.written[k], student, why);
+        comparisons.push_back(comparePictures(student, solutionPictures[k]));
+    }
+    size_t worst = 0;
+    Verdict v = judge(comparisons, result.missing, thresholds, worst);
+    r.verdict = v.kind;
+    r.score = v.score;
+    r.notes = v.notes;
+    r.ssim = comparisons[worst].ssim;
+    r.psnr = comparisons[worst].psnr;
+    r.worstSetting = settingLabel(settings[worst]);
+    for (size_t k = 0; k < settings.size(); ++k)
+        r.bySetting += fmt::format("{}{} {:.3f}", k ? " · " : "", settingLabel(settings[k]), comparisons[k].ssim);
+    if (std::string changed = sliderDifferences(result.sliders, solutionSliders); !changed.empty())
+        r.notes += (r.notes.empty() ? "" : "; ") + changed;
+    std::error_code ec;
+    r.picture = fs::relative(result.written[worst], out, ec).string();
+    r.solution = fs::relative(solutionOutputs[worst], out, ec).string();
+    return r;
+}
+
 }  // namespace
 
 bool loadOverrides(const std::string& file, std::map<std::string, Override>& out) {
@@ -208,25 +308,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         std::error_code ec;
         std::erase_if(subs, [&](const Submission& sub) { return fs::equivalent(sub.path, o.outputDir, ec); });
     }
-    // A student who handed in twice (a folder and a zip of it): both are
-    // graded, and said, never silently as NAME-2 (issue 29): here, and in
-    // each of their rows, where the teacher reads (the generated class of
-    // tools/grading-class.py: lena and lena-2 were two plain passes).
-    std::map<std::string, std::string> handedInTwice;  // submission path -> the note its row takes
-    for (size_t i = 0, j = 0; i < subs.size(); i = j) {
-        std::string files, paths;
-        for (j = i; j < subs.size() && subs[j].name == subs[i].name; ++j) {
-            fs::path p = fs::path(subs[j].path).lexically_normal();
-            if (p.filename().empty()) p = p.parent_path();  // "class/lena/"
-            files += (files.empty() ? "" : ", ") + p.filename().string();
-            paths += (paths.empty() ? "" : ", ") + subs[j].path;
-        }
-        if (j - i < 2) continue;
-        for (size_t k = i; k < j; ++k)
-            handedInTwice[subs[k].path] = fmt::format("handed in more than once ({}); each is a row of its own", files);
-        std::cerr << fmt::format("glimmer: warning: {} handed in more than once ({}); each is graded, as a row of its "
-                                 "own\n", sanitizeForTerminal(subs[i].name, false), sanitizeForTerminal(paths, false));
-    }
+    const std::map<std::string, std::string> handedInTwice = handedInMoreThanOnce(subs);
     if (subs.empty()) {
         std::cerr << "glimmer: error: batch: no submissions to grade\n";
         return kExitUsage;
@@ -276,27 +358,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         }
     header.expected = int(mine.size());
     // Resuming is only sound when the earlier run graded the same way.
-    if (resume && fs::exists(out / "grading.txt")) {
-        std::string text, why;
-        ReportHeader before;
-        std::vector<std::string> beforeStudents;
-        if (!readRegularFile((out / "grading.txt").string(), 1 << 24, text, why) ||
-            !parseRunHeader(text, before, beforeStudents, why)) {
-            std::cerr << fmt::format("glimmer: error: --resume: {}: {}\n", (out / "grading.txt").string(), why);
-            return kExitUsage;
-        }
-        if (before.solution != header.solution || before.settings != header.settings ||
-            before.thresholds != header.thresholds || before.sandbox != header.sandbox ||
-            before.solutionContent != header.solutionContent) {
-            std::cerr << fmt::format("glimmer: error: --resume: {} was graded with another solution{}, settings, "
-                                     "thresholds or sandbox; grade it again without --resume, or into another -o\n",
-                                     o.outputDir,
-                                     before.solution == header.solution && before.solutionContent != header.solutionContent
-                                         ? " (the same name, other content)"
-                                         : "");
-            return kExitUsage;
-        }
-    }
+    if (resume && !sameGradingAsBefore(out, header, o.outputDir)) return kExitUsage;
     writeWhole(out / "grading.txt", runHeaderText(header, stems));
 
     // What an earlier run of this folder already graded.
@@ -431,49 +493,11 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     runBatch(jobs, studentSettings, [&](size_t done, size_t total) { progress.update(fmt::format("batch: {}/{} graded", done, total)); },
              [&](size_t j, const BatchResult& result) {
                  const size_t i = jobStudent[j];
-                 GradeRow r;
+                 GradeRow r = rowOf(result, settings, solutionPictures, solutionJob.outputs, solved[0].sliders, thresholds,
+                                    out);
                  r.student = stems[i];
                  r.submission = subs[i].path;
                  r.script = jobs[j].script;
-                 r.diagnostics = result.diagnostics;
-                 r.seconds = result.ms / 1000.0;
-                 if (result.written.size() != settings.size()) {
-                     r.verdict = "error";
-                     r.notes = failureNote(result.diagnostics);
-                     if (r.notes == "timed out" || r.notes == "the renderer crashed") {
-                         // Where it stopped, as the worker last said (process/batch_worker.h).
-                         const int k = result.stoppedAt;
-                         r.notes += k == BatchResult::kStoppedPreparing ? std::string(" while loading and compiling")
-                                    : k >= 0 && size_t(k) < settings.size()
-                                        ? fmt::format(" at setting {} ({} of {})", settingLabel(settings[size_t(k)]),
-                                                      k + 1, settings.size())
-                                        : std::string();
-                     }
-                     keep(r);
-                     return;
-                 }
-                 std::vector<Comparison> comparisons;
-                 for (size_t k = 0; k < settings.size(); ++k) {
-                     Image student;
-                     std::string why;
-                     loadImage(result.written[k], student, why);
-                     comparisons.push_back(comparePictures(student, solutionPictures[k]));
-                 }
-                 size_t worst = 0;
-                 Verdict v = judge(comparisons, result.missing, thresholds, worst);
-                 r.verdict = v.kind;
-                 r.score = v.score;
-                 r.notes = v.notes;
-                 r.ssim = comparisons[worst].ssim;
-                 r.psnr = comparisons[worst].psnr;
-                 r.worstSetting = settingLabel(settings[worst]);
-                 for (size_t k = 0; k < settings.size(); ++k)
-                     r.bySetting += fmt::format("{}{} {:.3f}", k ? " · " : "", settingLabel(settings[k]),
-                                                comparisons[k].ssim);
-                 if (std::string changed = sliderDifferences(result.sliders, solved[0].sliders); !changed.empty())
-                     r.notes += (r.notes.empty() ? "" : "; ") + changed;
-                 r.picture = fs::relative(result.written[worst], out, ec).string();
-                 r.solution = fs::relative(solutionJob.outputs[worst], out, ec).string();
                  keep(r);
              });
     progress.finish();
