@@ -119,10 +119,10 @@ void Renderer::releaseAll() {
     targets_.clear();
     freeTarget(screen_.get());
     screen_.reset();
-    freeTarget(uploaded_.get());
-    uploaded_.reset();
-    if (uploadedTexture_) gl_->DeleteTextures(1, &uploadedTexture_);
-    uploadedTexture_ = 0;
+    freeTarget(watchPicture_.get());
+    watchPicture_.reset();
+    if (watchPictureTexture_) gl_->DeleteTextures(1, &watchPictureTexture_);
+    watchPictureTexture_ = 0;
     if (screenTexture_) gl_->DeleteTextures(1, &screenTexture_);
     screenTexture_ = 0;
     plan_.reset();
@@ -360,7 +360,7 @@ void Renderer::present(int texture, int windowWidth, int windowHeight) const {
 }
 
 void Renderer::presentIn(int texture, int windowHeight, int rx, int ry, int rw, int rh, float u0, float u1) const {
-    const Target* source = texture == kUploadedPicture ? uploaded_.get() : screen_.get();
+    const Target* source = texture == kWatchPicture ? watchPicture_.get() : screen_.get();
     if (texture >= 0) {
         source = nullptr;
         for (const auto& t : targets_)

@@ -98,7 +98,7 @@ public:
     // is under `lo` or over `hi`. Empty when nothing is drawn.
     std::optional<WatchSums> sumWatch(float lo, float hi);
     // The watch's picture (pipeline/watch_picture.h says what it shows) drawn
-    // on the GPU into texture kUploadedPicture, with the range lo..hi, its
+    // on the GPU into texture kWatchPicture, with the range lo..hi, its
     // scale (t = (v - lo) x scale; 0: mid grey) and the six marker colours
     // (NaN, Inf, below, above, not run, not drawn).
     void colourWatch(float lo, float hi, float scale, const std::array<std::array<unsigned char, 3>, 6>& marks);
@@ -162,7 +162,7 @@ public:
 
     // The watch's picture (colourWatch), shown by present and presentIn as
     // this texture.
-    static constexpr int kUploadedPicture = -2;
+    static constexpr int kWatchPicture = -2;
 
     // Copies the screen (texture -1) or a texture target to the window's
     // framebuffer 0, scaled to fit inside w x h and centred.
@@ -277,8 +277,8 @@ private:
     std::unique_ptr<Program> watch_;  // the watched program, rewritten (prepareWatch)
     int watchedProgram_ = -1;         // which of programs_ it stands in for
     std::unique_ptr<Target> screen_;
-    std::unique_ptr<Target> uploaded_;  // colourWatch's picture
-    unsigned uploadedTexture_ = 0;
+    std::unique_ptr<Target> watchPicture_;  // colourWatch's picture
+    unsigned watchPictureTexture_ = 0;
     // The watch's float targets and the GPU's programs that count and colour
     // them (gl/watch_gpu.cpp); the targets go with the watch, the programs
     // stay for the renderer's life.

@@ -325,19 +325,19 @@ std::optional<WatchSums> Renderer::sumWatch(float lo, float hi) {
 void Renderer::colourWatch(float lo, float hi, float scale, const std::array<std::array<unsigned char, 3>, 6>& marks) {
     if (!watchGpu_ || !watchGpu_->drawn || !watchGpu_->colour) return;
     const WatchGpu& w = *watchGpu_;
-    if (!uploaded_ || uploaded_->width != w.width || uploaded_->height != w.height) {
-        if (!uploaded_) {
-            uploaded_ = std::make_unique<Target>();
-            gl_->GenTextures(1, &uploadedTexture_);
-            gl_->GenFramebuffers(1, &uploaded_->fbo);
+    if (!watchPicture_ || watchPicture_->width != w.width || watchPicture_->height != w.height) {
+        if (!watchPicture_) {
+            watchPicture_ = std::make_unique<Target>();
+            gl_->GenTextures(1, &watchPictureTexture_);
+            gl_->GenFramebuffers(1, &watchPicture_->fbo);
         }
-        gl_->BindTexture(GL_TEXTURE_2D, uploadedTexture_);
+        gl_->BindTexture(GL_TEXTURE_2D, watchPictureTexture_);
         textureParameters(*gl_);
         gl_->TexImage2D(GL_TEXTURE_2D, 0, GL_RGBA8, w.width, w.height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
         gl_->BindTexture(GL_TEXTURE_2D, 0);
-        gl_->BindFramebuffer(GL_FRAMEBUFFER, uploaded_->fbo);
-        gl_->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, uploadedTexture_, 0);
-        uploaded_->width = w.width, uploaded_->height = w.height;
+        gl_->BindFramebuffer(GL_FRAMEBUFFER, watchPicture_->fbo);
+        gl_->FramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, watchPictureTexture_, 0);
+        watchPicture_->width = w.width, watchPicture_->height = w.height;
     }
     gl_->UseProgram(w.colour);
     bindUnit(*gl_, 0, w.textures[0], w.colour, "uValue");
@@ -350,17 +350,17 @@ void Renderer::colourWatch(float lo, float hi, float scale, const std::array<std
     for (size_t m = 0; m < 6; ++m)
         for (size_t c = 0; c < 3; ++c) colours[m * 3 + c] = float(marks[m][c]) / 255.f;
     gl_->Uniform3fv(gl_->GetUniformLocation(w.colour, "uMarks"), 6, colours);
-    drawInto(*gl_, uploaded_->fbo, w.width, w.height, 1);
+    drawInto(*gl_, watchPicture_->fbo, w.width, w.height, 1);
     unbindUnits(*gl_, 2);
     gl_->UseProgram(0);
     gl_->BindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 Image Renderer::readWatchPicture() const {
-    if (!watchGpu_ || !watchGpu_->drawn || !uploaded_ || uploaded_->width != watchGpu_->width ||
-        uploaded_->height != watchGpu_->height)
+    if (!watchGpu_ || !watchGpu_->drawn || !watchPicture_ || watchPicture_->width != watchGpu_->width ||
+        watchPicture_->height != watchGpu_->height)
         return {};
-    return readPicture(*gl_, uploaded_->fbo, uploaded_->width, uploaded_->height);
+    return readPicture(*gl_, watchPicture_->fbo, watchPicture_->width, watchPicture_->height);
 }
 
 WatchCapture Renderer::readWatchCapture(int x, int y, int w, int h) const {

@@ -44,7 +44,7 @@ bool startWatch(const WatchSpec& spec, const Plan& plan, Renderer& renderer, Dia
 struct WatchFrame {
     bool drawn = false;  // false when the driver cannot draw into float targets
     WatchStats stats;
-    // The picture is in the renderer's texture Renderer::kUploadedPicture;
+    // The picture is in the renderer's texture Renderer::kWatchPicture;
     // Renderer::readWatchPicture and readWatchCapture read it and the floats back.
 };
 // Draws the watch and counts and colours it on the GPU.

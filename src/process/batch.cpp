@@ -304,7 +304,7 @@ private:
     void checkTime(Worker& w) {
         if (w.job < 0) return;
         const BatchJob& job = jobs_[size_t(w.job)];
-        double limit = contextLimitSeconds(s_);
+        double limit = contextLimit_;
         if (w.begun) {
             // The limit now: the whole job's, or (grading) that of the setting it is drawing.
             limit = s_.timeoutSeconds;
@@ -364,6 +364,7 @@ private:
     std::vector<pid_t> ending_;
     size_t finished_ = 0;
     bool contextMissing_ = false;
+    const double contextLimit_ = contextLimitSeconds(s_);  // read once: checkTime runs on every poll
 };
 
 }  // namespace

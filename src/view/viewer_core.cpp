@@ -193,8 +193,10 @@ std::string ViewerCore::probeTextAt(int ix, int iy) {
     if (s_.watch) {  // the watch's own floats, every component, not the picture's bytes
         const WatchStats& w = watchFrame_.stats;
         if (!watchFrame_.drawn || ix < 0 || iy < 0 || ix >= w.width || iy >= w.height) return "";
-        return fmt::format("({}, {}) of the watch: {} = {}", ix, iy, s_.watch->spec.expression,
-                           watchValueAt(*s_.renderer, ix, iy));
+        WatchProbe& p = watchProbe_;
+        if (p.x != ix || p.y != iy || p.version != pictureVersion_)
+            p = {ix, iy, pictureVersion_, watchValueAt(*s_.renderer, ix, iy)};
+        return fmt::format("({}, {}) of the watch: {} = {}", ix, iy, s_.watch->spec.expression, p.text);
     }
     const Image& img = probeImage();
     if (img.empty() || ix < 0 || iy < 0 || ix >= img.width || iy >= img.height) return "";

@@ -179,6 +179,13 @@ private:
     unsigned valuesId_ = 0;
     float uiScale_ = 1.f;
     WatchFrame watchFrame_;                 // the last watch drawn
+    // The watch's value at the probed pixel, read from the GPU once per
+    // pixel and picture (the probe asks every frame the pointer rests).
+    struct WatchProbe {
+        int x = -1, y = -1;
+        std::uint64_t version = ~0ull;
+        std::string text;
+    } watchProbe_;
     std::optional<WatchRange> watchRange_;  // `watch range LO,HI`; none: the values' own
     bool watchStale_ = false;               // a watch set up or its range changed: draw it again
 };

@@ -96,7 +96,7 @@ void presentPicture(const ViewerState& s, int windowHeight, int x, int y, int w,
         s.renderer->presentIn(s.compareLeft, windowHeight, x, y, w, h, 0.f, d);
         s.renderer->presentIn(s.compareRight, windowHeight, x, y, w, h, d, 1.f);
     } else {
-        s.renderer->presentIn(s.watch ? Renderer::kUploadedPicture : s.shownTexture, windowHeight, x, y, w, h);
+        s.renderer->presentIn(s.watch ? Renderer::kWatchPicture : s.shownTexture, windowHeight, x, y, w, h);
     }
 }
 

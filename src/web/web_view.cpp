@@ -50,8 +50,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <set>
 #include <iostream>
+#include <set>
 #include <sstream>
 #include <string>
 

@@ -57,8 +57,10 @@ TEST(ViewerWatch, FollowsASliderAsRenderWatchDrawsItAndTheProbeReadsItsFloats) {
     v.send("set uHalfSize 5");
     v.send("save w5.png");
     v.send("probe 100 60");
+    v.send("probe 128 60");
     v.send("set uHalfSize 9");
     v.send("save w9.png");
+    v.send("probe 128 60");  // the same pixel of a new picture: read again, not the last answer
     // A slider of the watched pass alone: the blur that feeds it is kept, not drawn again.
     v.send("watch bloom.frag:13 rgb + uAdd*rgbblur");
     v.send("set uAdd 3");
@@ -85,6 +87,15 @@ TEST(ViewerWatch, FollowsASliderAsRenderWatchDrawsItAndTheProbeReadsItsFloats) {
                                          pfmAt(p.dir / "r5.pfm", 100, 60, 0), pfmAt(p.dir / "r5.pfm", 100, 60, 1),
                                          pfmAt(p.dir / "r5.pfm", 100, 60, 2));
     EXPECT_NE(v.log().find(want), std::string::npos) << want << v.log();
+    ASSERT_EQ(render(p, "--set uHalfSize=9 --watch bloom.frag:12:rgbblur -o r9.pfm"), 0);
+    auto probed = [&](const char* pfm) {
+        return fmt::format("probe (128, 60) of the watch: rgbblur = vec3({:.9g}, {:.9g}, {:.9g})\n",
+                           pfmAt(p.dir / pfm, 128, 60, 0), pfmAt(p.dir / pfm, 128, 60, 1), pfmAt(p.dir / pfm, 128, 60, 2));
+    };
+    const std::string want5 = probed("r5.pfm"), want9 = probed("r9.pfm");
+    EXPECT_NE(want9, want5) << "the two settings must differ at that pixel for this to test anything";
+    EXPECT_NE(v.log().find(want5), std::string::npos) << want5 << v.log();
+    EXPECT_NE(v.log().find(want9), std::string::npos) << want9 << v.log();
 }
 
 TEST(ViewerWatch, ARefusalIsSaidAsTheCommandLineSaysItAndAnEditIsWatchedAgain) {
