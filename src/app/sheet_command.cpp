@@ -11,7 +11,7 @@
 #include "app/subcommands.h"
 #include "process/output_guard.h"
 #include "process/session.h"
-#include "sheet/sheet_drawing.h"
+#include "sheet/sheet_request.h"
 #include "pipeline/console.h"
 
 namespace glimmer {
@@ -29,19 +29,12 @@ void addSheetCommand(CLI::App& app, SheetOptions& o) {
 }
 
 int runSheet(const SheetOptions& o) {
-    std::vector<SheetAxis> axes;
-    for (const auto& v : o.vary) {
-        SheetAxis a;
-        if (!parseSheetAxis(v, a)) {
+    // The axes' form first: a usage error needs no context.
+    for (const auto& v : o.vary)
+        if (SheetAxis a; !parseSheetAxis(v, a)) {
             std::cerr << fmt::format("glimmer: error: --vary '{}' is not NAME=V1,V2,...\n", v);
             return kExitUsage;
         }
-        axes.push_back(a);
-    }
-    if (axes.size() > 2) {
-        std::cerr << "glimmer: error: --vary can be given at most twice (columns, then rows)\n";
-        return kExitUsage;
-    }
     CommonOptions common = o;
     if (common.size.empty()) common.size = "256x256";
     Session s;
@@ -51,23 +44,20 @@ int runSheet(const SheetOptions& o) {
         std::cerr << refusal;
         return kExitUsage;
     }
-
-    // Every value must be valid before anything is drawn.
-    const SheetAxis& cols = axes[0];
-    const SheetAxis rows = axes.size() > 1 ? axes[1] : SheetAxis{};
+    // Every value must be valid before anything is drawn (sheet/sheet_request.h, as the page's Save sheet).
+    SheetRequest request;
+    std::string usage;
     Diagnostics d;
-    if (!checkSheetValues(plan, *s.values, cols, rows, d)) {
+    const std::string scriptName = std::filesystem::path(o.script == "-" ? kStdinScriptName : o.script).filename().string();
+    if (!makeSheetRequest(o.vary, scriptName, plan, *s.values, request, usage, d)) {
+        if (!usage.empty()) std::cerr << "glimmer: error: " << usage << "\n";
         printDiagnostics(d, s.loaded.sources, std::cerr);
         return kExitUsage;
     }
-
-    std::string title = std::filesystem::path(o.script == "-" ? kStdinScriptName : o.script).filename().string();
-    for (const auto& set : o.sets) {
-        auto eq = set.find('=');
-        title += "   " + set.substr(0, eq) + " = " + set.substr(eq + 1);
-    }
+    const SheetAxis& cols = request.cols;
+    const SheetAxis& rows = request.rows;
     Progress progress;
-    Image sheet = drawSheet(*s.renderer, plan, *s.values, cols, rows, title, [&](int done, int total) {
+    Image sheet = drawSheet(*s.renderer, plan, *s.values, cols, rows, request.title, [&](int done, int total) {
         progress.update(fmt::format("sheet: {}/{} rendered", done, total));
     });
     progress.finish();

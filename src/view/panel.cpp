@@ -377,6 +377,10 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
             ImGui::TextWrapped("(!) %s: %zu NaN, %zu Inf, %zu negative, %zu above 65504", h.name.c_str(), h.health.nan,
                                h.health.inf, h.health.negative, h.health.above65504);
             ImGui::PopStyleColor();
+            if (!s.controlRects.count("Health")) {  // the first badge, for `where Health` (both shells show it)
+                const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+                s.controlRects["Health"] = {at.x, at.y, size.x, size.y};
+            }
         }
         controls(s);
     }

@@ -23,6 +23,11 @@ struct ViewOptions {
 
 int runView(const ViewOptions& options);
 
+// The options checked before a window opens (view_options.cpp): 0 with the
+// window's first picture size in w x h (--size, else the script's
+// WindowSize, else 600x600), or the exit code after a usage error.
+int checkViewOptions(const ViewOptions& options, int& w, int& h);
+
 // What it holds between frames, and the panel drawing it: view/panel.h.
 
 }  // namespace glimmer

@@ -9,6 +9,7 @@
 #include <fmt/format.h>
 
 #include "gl/ui_texture.h"
+#include "gl/window_frame.h"
 #include "image/ttf_text.h"
 #include "plan/dependencies.h"
 #include "view/panel.h"
@@ -33,6 +34,7 @@ void ViewerCore::releaseGl() {
     drawing_.reset();
     s_.renderer.reset();
     valuesTexture_.reset();
+    windowFrame_.reset();
     valuesId_ = 0;
     valuesUploaded_.clear();
 }
@@ -53,18 +55,24 @@ bool ViewerCore::prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Ren
     return renderer != nullptr;
 }
 
-bool ViewerCore::load(int w, int h, Diagnostics& diags, SourceTexts& sources, Plan* plan) {
+bool ViewerCore::load(int w, int h, Diagnostics& diags, SourceTexts& sources, Plan* plan, const std::string& why) {
     LoadedScript next;
     std::unique_ptr<Renderer> renderer;
     prepareAt(w, h, next, renderer, diags);
     keepMessages(s_, diags, next.sources);
+    if (source_.oneLineMessages)
+        for (auto* list : {&s_.errors, &s_.warnings})
+            for (auto& m : *list) m.text = m.text.substr(0, m.text.find('\n'));
     sources = next.sources;
+    noteFiles(next.plan);
     if (plan) *plan = next.plan;
     if (!renderer) {
         if (s_.errors.empty()) s_.errors.push_back({"the script could not be loaded", source_.script});
         s_.failed = true;
+        s_.status = why + " failed; keeping the last good picture";
         return false;
     }
+    s_.status = why;
     adoptScript(s_, std::move(next), std::move(renderer), source_.sets, diags);
     drawing_.reset();  // its passes belong to the old plan
     firstFrame_ = true;

@@ -1,15 +1,19 @@
 // The viewer with no platform in it (issue 25): what `glimmer view` and the
 // page both are, once. A shell (view/viewer.cpp: GLFW; web/web_view.cpp:
-// Emscripten) makes the context, turns its events into these calls and
-// presents the picture; everything a student sees happen to the picture
-// happens here, the same way in both:
+// Emscripten) makes the context, hands the core its input and a ViewerHost
+// for what only the platform does (save a file, print, reload, quit), and
+// calls frame(); everything a student sees happen to the picture and the
+// panel happens here, the same way in both (issue 38: each shell built the
+// frame in its own words, and only the window measured numeric health):
 //
 //   load       prepare the script on a renderer of its own; on errors the
 //              last good script, picture and slider values stay (adoptScript)
-//   draw       the passes that changed, a slice of about `budgetMs` at a
-//              time (gl/renderer_sliced.cpp), so a heavy blur never holds
-//              the window or the page's input; a new script's first picture
-//              whole
+//   frame      one frame of the window or page: the passes that changed
+//              (a slice of about `budgetMs`, gl/renderer_sliced.cpp, so a
+//              heavy blur never holds the input; a new script's first
+//              picture whole), numeric health now and then, the probe,
+//              the panel, the values box, the picture and panel presented,
+//              then what the panel and the keys asked, through the host
 //   finished   the picture once every slice is drawn (Save, snapshots)
 //   hardcopy   the script at another size with the values carried over
 //   probe      the float value of every channel under a point of the picture
@@ -20,9 +24,11 @@
 //              (pipeline/watch.h), drawn again whole as sliders move, set up
 //              again on every reload; the probe then reads its floats
 //
-// Contract: no GLFW, no Emscripten, no OpenGL calls of its own (the Renderer
-// makes them); Dear ImGui only for the probe's tooltip and the values box. One core per shown
-// script; the shell owns the context and keeps it current.
+// Contract: no GLFW, no Emscripten, no OpenGL calls of its own (the Renderer,
+// the WindowFrame and Dear ImGui's OpenGL 3 backend, the same in both shells,
+// make them). The state is read-only to shells: they change it through the
+// calls below. One core per shown script; the shell owns the context and
+// keeps it current.
 #pragma once
 #include <chrono>
 #include <cstdint>
@@ -33,12 +39,15 @@
 #include <vector>
 
 #include "pipeline/prepare_script.h"
+#include "sheet/sheet_request.h"
 #include "view/view_commands.h"
+#include "view/view_keys.h"
 #include "view/view_model.h"
 #include "view/viewer_state.h"
 
 namespace glimmer {
 class UiTexture;
+class WindowFrame;
 }
 
 namespace glimmer {
@@ -51,6 +60,44 @@ struct ViewerSource {
     std::vector<std::string> sets;  // --set, applied to every load's first values
     bool standIns = true;           // a missing image or model becomes a stand-in, said in a warning
     bool sandbox = false;
+    // The panel shows each message's first line only (the page: it shows
+    // them whole under the canvas and marks them in its editor, so errors
+    // never push the sliders out of a laptop's window, issue 27).
+    bool oneLineMessages = false;
+};
+
+// What only the shell can do, asked by the core's frame and commands.
+class ViewerHost {
+public:
+    virtual ~ViewerHost() = default;
+    // The platform's part of a frame's start, between Dear ImGui's OpenGL 3
+    // backend's NewFrame and ImGui::NewFrame: the platform backend's
+    // NewFrame, or the page's display size and time step.
+    virtual void platformFrame() {}
+    // Input the frame reads once ImGui::NewFrame has taken its events (the
+    // wheel, whether the panel has the pointer): the window's keys and mouse.
+    virtual void input() {}
+    // A line for the user: the window prints it after "glimmer view: " on
+    // stderr, the page on the browser's console or as a command's answer.
+    virtual void say(const std::string& line) = 0;
+    // Text as it is: `frames` and `help` (toStdout), or the numeric-health
+    // report once per change (stderr), for scripts that read them.
+    virtual void print(const std::string& text, bool toStdout) = 0;
+    virtual void reload() = 0;  // Reload, R, `reload`: the window loads again, the page asks its page
+    // Save, S, `save [NAME]`: the picture (savedPicture) to NAME, or the
+    // shell's own next name when "" (the page downloads it).
+    virtual void save(const std::string& name, bool hardcopy) = 0;
+    virtual void scale(float uiScale) = 0;  // `scale S`: the shell's layout, then setUiScale
+    virtual void quit() = 0;                // Q, `quit`: the window closes; the page has no quit
+};
+
+// Where one frame puts things, in window (canvas) pixels, top-left origin.
+struct FrameGeometry {
+    int windowW = 0, windowH = 0;
+    int pictureX = 0, pictureY = 0, pictureW = 0, pictureH = 0;
+    float panelX = 0;     // the panel's left edge; it is as tall as the window
+    float panelMaxW = 0;  // > 0: the panel is at most this wide (the page pins it)
+    double budgetMs = 0;  // this frame's slice of drawing
 };
 
 // A slice of a heavy frame draws for about this long between two window
@@ -76,7 +123,6 @@ public:
     // the shell calls it while its context is still current.
     void releaseGl();
 
-    ViewerState& state() { return s_; }
     const ViewerState& state() const { return s_; }
     const ViewerSource& source() const { return source_; }
     // The --set values the next loads start from (the page's ?set=).
@@ -85,7 +131,44 @@ public:
     // Loads the script at w x h. True when it is on show now; false (its
     // errors kept in the state for the panel) when the last good script,
     // if any, stays. `diags` and `sources` receive what the load said.
-    bool load(int w, int h, Diagnostics& diags, SourceTexts& sources, Plan* plan = nullptr);
+    // The panel's status line says `why` ("reloaded after a change to
+    // bloom.frag"), or "WHY failed; keeping the last good picture".
+    bool load(int w, int h, Diagnostics& diags, SourceTexts& sources, Plan* plan = nullptr,
+              const std::string& why = "loaded");
+    // The script and its shaders, as the last load that named them listed
+    // them (what a student edits, in order); and every file any load read
+    // (what the window watches: a broken edit keeps what it may still need).
+    const std::vector<std::string>& scriptFiles() const { return scriptFiles_; }
+    const std::vector<std::string>& readFiles() const { return readFiles_; }
+
+    // The frame: false, with `why`, when the driver lacks what the window's
+    // clear needs (made once, with the context current).
+    bool startFrames(std::string& why);
+    // One frame (see the head comment), the same steps in the window and
+    // the page. The panel's size it measured: panelWidth(), panelHeight().
+    void frame(const FrameGeometry& g, ViewerHost& host);
+    int panelWidth() const { return panelW_; }
+    int panelHeight() const { return panelH_; }
+    // A command of the panel, --exec, standard input, a key or the page:
+    // what the core does (apply), then the rest through the host.
+    void command(const ViewCommand& c, ViewerHost& host);
+    // A key (named as the DOM names it, view/view_keys.h) when no text field
+    // has the keyboard: play/pause, the panel and the view reset now; reload,
+    // save and quit at the end of the next frame. Returns its action (the
+    // shell's own: Fullscreen) or None.
+    KeyAction key(std::string_view name);
+    // glman's mouse on the picture at px, py, pw, ph (view/viewer_state.h
+    // pointerOnPicture); letGo: a button released anywhere.
+    bool pointer(double x, double y, bool down, float wheel, bool captured, int px, int py, int pw, int ph);
+    void letGo() { drag_.dragging = false; }
+    // The time moves on by `seconds` while playing (a Timer's animation).
+    void advance(double seconds);
+    void setKeyHint(std::string hint) { s_.keyHint = std::move(hint); }
+    void setStatus(std::string status) { s_.status = std::move(status); }
+    // The numeric health (pipeline/numeric_health.h) of the last finished
+    // picture, measured at most twice a second (it reads every target back);
+    // its report printed through the host when it changes.
+    void noteHealth(ViewerHost& host);
 
     // Draws: starts a frame of the passes that changed since the last one
     // started (a change while a frame is under way replaces it and keeps
@@ -108,7 +191,10 @@ public:
     // legible from the back of a room at 2), remade only when its text
     // changes; empty when off or nothing to show. drawValues() puts it over
     // the picture (at kOverlayAt of the window) with Dear ImGui.
+    // The panel's fonts are made again at the next frame's start (Dear
+    // ImGui's font texture cannot change inside a frame).
     void setUiScale(float scale) { uiScale_ = scale; }
+    float uiScale() const { return uiScale_; }
     const Image& valuesLayer();
     void drawValues();
 
@@ -118,6 +204,12 @@ public:
     // shell's own (reload, save, scale, help, frames, quit). `probe X Y`
     // reads that pixel of the finished picture.
     bool apply(const ViewCommand& c, std::string& said);
+    // A control's value as --set's NAME=VALUE: true when it applied without
+    // errors (the page's kept values after a reload).
+    bool set(const std::string& assignment, Diagnostics& diags);
+    // The contact sheet of the shown script at its values (Save sheet); the
+    // next frame draws every pass again (the sheet drew over the targets).
+    Image sheet(const SheetRequest& request);
 
     // The probe: the values under (x, y) of a picture shown in a pw x ph
     // rectangle (fitted, centred), in s.probeText; "" when off or outside.
@@ -160,9 +252,22 @@ private:
     const Image& probeImage();
     std::string probeTextAt(int ix, int iy);
 
+    // The fonts at uiScale_ when the last frame's were made at another.
+    void followUiScale(ViewerHost& host);
+    void noteFiles(const Plan& plan);
+
     ViewerSource source_;
     GetProcAddress getProc_;
     ViewerState s_;
+    std::unique_ptr<WindowFrame> windowFrame_;  // clears the window or canvas
+    std::vector<ViewCommand> keyAsks_;           // reload, save, quit from keys: at the frame's end
+    PictureDrag drag_;
+    int panelW_ = 0, panelH_ = 0;
+    float fontsScale_ = 0;  // the scale the fonts were last made at (0: not yet)
+    std::vector<std::string> scriptFiles_, readFiles_;
+    std::chrono::steady_clock::time_point lastHealth_{};
+    std::uint64_t healthVersion_ = 0;
+    std::string healthReport_;
     std::optional<SlicedFrame> drawing_;  // the frame being drawn a slice at a time
     bool firstFrame_ = true;              // the next frame is a new renderer's first: drawn whole
     std::set<int> drawnPasses_;

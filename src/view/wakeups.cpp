@@ -6,6 +6,10 @@
 #include <sys/eventfd.h>
 #include <unistd.h>
 
+#include <iostream>
+
+#include "view/view_commands.h"
+
 #include <cstdint>
 
 namespace glimmer {
@@ -55,6 +59,15 @@ std::vector<std::string> CommandQueue::take() {
     std::vector<std::string> out(lines_.begin(), lines_.end());
     lines_.clear();
     return out;
+}
+
+void CommandQueue::start(const std::string& exec, bool readStdin) {
+    for (const auto& line : splitCommands(exec)) push(line);
+    if (!readStdin) return;
+    std::thread([this] {
+        for (std::string line; std::getline(std::cin, line);)
+            for (const auto& part : splitCommands(line)) push(part);
+    }).detach();
 }
 
 FileWaker::FileWaker(int notifyFd) {

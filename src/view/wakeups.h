@@ -39,6 +39,11 @@ class CommandQueue {
 public:
     void push(std::string line);
     std::vector<std::string> take();
+    // --exec's commands, then (when `readStdin`) standard input's lines as
+    // they come, on a thread of its own. A line may hold several commands
+    // separated by ';', as --exec does (issue 39: `set uAdd 2; set uHalfSize 11`
+    // on one line was refused).
+    void start(const std::string& exec, bool readStdin);
 
 private:
     std::mutex mutex_;

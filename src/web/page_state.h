@@ -7,7 +7,6 @@
 
 #include "backends/context.h"
 #include "image/image.h"
-#include "view/viewer_state.h"
 
 namespace glimmer_web {
 
@@ -24,15 +23,16 @@ void setLastOutput(std::string text);
 // "NAME=VALUE;NAME=VALUE" -> the --set entries.
 std::vector<std::string> splitSets(const std::string& text);
 
-// The live viewer (web_view.cpp), for the input: its state (null when no
-// script is open) and whether a canvas point is on the picture.
-glimmer::ViewerState* viewerState();
+// The live viewer (web_view.cpp), for the input, in the canvas's pixels:
+// whether a point is on the picture (shown at the page's scale); glman's
+// mouse on it (the core's pointer: a drag turns, the wheel zooms, the
+// split's divider moves), a button let go anywhere, and whether the shown
+// scene turns at all (the wheel scrolls the page otherwise). Each does
+// nothing when no script is open.
 bool pointerOverPicture(float x, float y);
-// The picture's size on the canvas: its own times the page's scale (the
-// panel's `scale`, devicePixelRatio or the projector's presentation mode),
-// in the canvas's pixels, which the input's coordinates are in.
-int shownPictureW();
-int shownPictureH();
+bool viewerPointer(float x, float y, bool down, float wheel, bool captured);
+void viewerLetGo();
+bool viewerTurns();
 // The panel's keys on the canvas (its buttons name them): R reload, S save,
 // space pause or play, 0 the view reset. True when `key` (DOM's
 // KeyboardEvent.key) is one; its effect comes with the next frame.

@@ -1,6 +1,6 @@
 // The page's input for the live viewer: the canvas's own mouse, touch, wheel
 // and key events, handed to ImGui (1.86's io fields) and to glman's mouse on the
-// picture (view/viewer_state.h pointerOnPicture).
+// picture (the viewer core's pointer, view/viewer_core.h).
 //
 // Why not Emscripten's GLFW port with imgui_impl_glfw, as on the desktop:
 // that port listens for keys on the whole window and makes its own WebGL
@@ -15,8 +15,6 @@
 #include "web/page_state.h"
 
 namespace {
-
-glimmer::PictureDrag drag;
 
 // DOM KeyboardEvent.key -> ImGui's key, one row per key ImGui's text
 // fields and navigation use (1.86 maps its keys through io.KeyMap).
@@ -61,16 +59,14 @@ EM_BOOL onMouse(int type, const EmscriptenMouseEvent* e, void*) {
     if (type == EMSCRIPTEN_EVENT_MOUSEDOWN && e->button < 3) io.MouseDown[e->button == 1 ? 2 : e->button == 2 ? 1 : 0] = true;
     if (type == EMSCRIPTEN_EVENT_MOUSEUP && e->button < 3) io.MouseDown[e->button == 1 ? 2 : e->button == 2 ? 1 : 0] = false;
     mods(io, e->ctrlKey, e->shiftKey, e->altKey, e->metaKey);
-    if (glimmer::ViewerState* s = glimmer_web::viewerState())
-        pointerOnPicture(*s, drag, x, y, io.MouseDown[0], 0.f, io.WantCaptureMouse, 0, 0, glimmer_web::shownPictureW(),
-                         glimmer_web::shownPictureH());
+    glimmer_web::viewerPointer(x, y, io.MouseDown[0], 0.f, io.WantCaptureMouse);
     return type == EMSCRIPTEN_EVENT_MOUSEDOWN;  // no text selection starting on the canvas
 }
 
 // A button let go anywhere (a slider dragged past the canvas's edge).
 EM_BOOL onRelease(int, const EmscriptenMouseEvent* e, void*) {
     if (e->button < 3) ImGui::GetIO().MouseDown[e->button == 1 ? 2 : e->button == 2 ? 1 : 0] = false;
-    drag.dragging = false;
+    glimmer_web::viewerLetGo();
     return false;
 }
 
@@ -88,10 +84,8 @@ EM_BOOL onTouch(int type, const EmscriptenTouchEvent* e, void*) {
     io.MousePos = ImVec2(x, y);
     const bool down = type == EMSCRIPTEN_EVENT_TOUCHSTART || type == EMSCRIPTEN_EVENT_TOUCHMOVE;
     io.MouseDown[0] = down;
-    if (!down) drag.dragging = false;
-    if (glimmer::ViewerState* s = glimmer_web::viewerState())
-        pointerOnPicture(*s, drag, x, y, down, 0.f, io.WantCaptureMouse, 0, 0, glimmer_web::shownPictureW(),
-                         glimmer_web::shownPictureH());
+    if (!down) glimmer_web::viewerLetGo();
+    glimmer_web::viewerPointer(x, y, down, 0.f, io.WantCaptureMouse);
     return true;  // the canvas's own: no scroll, no synthesized mouse events after it
 }
 
@@ -100,12 +94,9 @@ EM_BOOL onWheel(int, const EmscriptenWheelEvent* e, void*) {
     // A line is about 100 "pixels" of deltaY in Chromium; one wheel notch is one ImGui step.
     float steps = float(e->deltaMode == DOM_DELTA_PIXEL ? -e->deltaY / 100.0 : -e->deltaY);
     io.MouseWheel += steps;
-    glimmer::ViewerState* s = glimmer_web::viewerState();
     bool onPicture = glimmer_web::pointerOverPicture(io.MousePos.x, io.MousePos.y);
-    if (s && onPicture)
-        pointerOnPicture(*s, drag, io.MousePos.x, io.MousePos.y, io.MouseDown[0], steps, io.WantCaptureMouse, 0, 0,
-                         glimmer_web::shownPictureW(), glimmer_web::shownPictureH());
-    return onPicture && s && s->turns;  // the page scrolls unless the wheel zoomed a scene
+    if (onPicture) glimmer_web::viewerPointer(io.MousePos.x, io.MousePos.y, io.MouseDown[0], steps, io.WantCaptureMouse);
+    return onPicture && glimmer_web::viewerTurns();  // the page scrolls unless the wheel zoomed a scene
 }
 
 EM_BOOL onKey(int type, const EmscriptenKeyboardEvent* e, void*) {

@@ -142,4 +142,12 @@ NODE_PATH=/usr/share/nodejs timeout 120 node tools/page-commands.mjs "file://$pa
 [ -s "$pictures/f16.png" ] && same_picture "$pictures/f16-desktop.png" "$pictures/f16.png"
 tally $? "the page's saved RGBA16F target is not render --dump's"
 
+# The numeric-health badge is the core's (issue 38: only the window measured
+# it): a float target holding NaN shows the panel's badge in the page too.
+printf 'wait 1500\nwhere Health\nquit\n' > "$pictures/health.commands"
+got=$(NODE_PATH=/usr/share/nodejs timeout 120 node tools/page-commands.mjs "file://$page" tests/data/web/nan.glib \
+  64x64 0 "$pictures/health.commands" "$pictures" 2> /dev/null)
+case "$got" in *'"where Health at '*) true ;; *) false ;; esac
+tally $? "the page shows no health badge for a NaN in a float target: $got"
+
 finish
