@@ -13,7 +13,7 @@ if [ -z "$cxx" ] || [ -z "$cc" ]; then
   exit 0
 fi
 CC="$cc" CXX="$cxx" cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLIMMER_FUZZ=ON -DGLIMMER_TESTS=OFF >/dev/null
-targets=(fuzz_script fuzz_shader_text fuzz_image_bmp fuzz_image_pngjpeg fuzz_image_hdr fuzz_image_tex fuzz_grade_record)
+targets=(fuzz_script fuzz_shader_text fuzz_glsl_lexer fuzz_image_bmp fuzz_image_pngjpeg fuzz_image_hdr fuzz_image_tex fuzz_grade_record)
 cmake --build build-fuzz -j2 --target "${targets[@]}"
 
 corpus=build-fuzz/corpus
@@ -54,6 +54,7 @@ for t in "${targets[@]}"; do
   dir="$corpus/${t#fuzz_image_}"; [ "$t" = fuzz_script ] && dir="$corpus/script"
   [ "$t" = fuzz_grade_record ] && dir="$corpus/grade_record"
   [ "$t" = fuzz_shader_text ] && dir="$corpus/shader_text"
+  [ "$t" = fuzz_glsl_lexer ] && dir="$corpus/shader_text"
   mkdir -p "build-fuzz/findings/$t"
   echo "fuzz-ci: $t for ${secs}s ($(ls "$dir" | wc -l) seeds)"
   log="build-fuzz/findings/$t/log"
