@@ -73,6 +73,43 @@ TEST(WatchRewrite, ADoWhileOnOneLineIsWatchedAfterItsWhile) {
               "    { x += 1.; glimmer_watch_store(x); }");
 }
 
+// Issue 38: every statement form the grammar allows on one line is watched
+// where it runs, or refused with the real reason.
+TEST(WatchRewrite, EveryStatementFormOnOneLine) {
+    auto one = [](const char* statement, const char* expression) {
+        const std::string src = std::string("void main() {\n  float x = 0.; int i = 1;\n") + statement +
+                                "\n  gl_FragColor = vec4(x);\n}\n";
+        return watchedLine(src, 3, expression, 3);
+    };
+    EXPECT_EQ(one("  for(;;) x += 1.;", "x"), "  for(;;) { x += 1.; glimmer_watch_store(x); }");
+    EXPECT_EQ(one("  while (x < 1.) x += 0.5;", "x"), "  while (x < 1.) { x += 0.5; glimmer_watch_store(x); }");
+    EXPECT_EQ(one("  do x += 0.5; while (x < 0.);", "x"), "  do x += 0.5; while (x < 0.); glimmer_watch_store(x);");
+    // Whichever branch runs, the line ran: each branch on the line is watched.
+    EXPECT_EQ(one("  if (x > 0.) x = 1.; else x = 2.;", "x"),
+              "  if (x > 0.) { x = 1.; glimmer_watch_store(x); } else { x = 2.; glimmer_watch_store(x); }");
+    EXPECT_EQ(one("  if (x > 0.) x = 1.; else if (i > 0) return; else x = 3.;", "x"),
+              "  if (x > 0.) { x = 1.; glimmer_watch_store(x); } else if (i > 0) {  glimmer_watch_store(x); return; } "
+              "else { x = 3.; glimmer_watch_store(x); }");
+    EXPECT_EQ(one("  if (x > 0.) { x = 1.; } else x = 2.;", "x"),
+              "  if (x > 0.) { x = 1.;  glimmer_watch_store(x);} else { x = 2.; glimmer_watch_store(x); }");
+    // An if/else over two lines: only the line's own branch.
+    EXPECT_EQ(watchedLine("void main() {\n  float x = 0.;\n  if (x > 0.) x = 1.;\n  else x = 2.;\n  gl_FragColor = vec4(x);\n}\n",
+                          4, "x", 3),
+              "  if (x > 0.) x = 1.;");
+    EXPECT_EQ(one("  i = x > 0. ? 1 : 2;", "i"), "  i = x > 0. ? 1 : 2; glimmer_watch_store(i);");
+}
+
+TEST(WatchRewrite, ASwitchsCasesAreWatchedAndALabelAloneIsRefused) {
+    const char* src = "void main() {\n  int i = 1; float x = 0.;\n  switch (i) {\n  case 0: x = 1.; break;\n  case 1:\n"
+                      "    x = 2.;\n  default: return;\n  }\n  gl_FragColor = vec4(x);\n}\n";
+    EXPECT_EQ(watchedLine(src, 4, "x", 4), "  case 0: x = 1.;  glimmer_watch_store(x); break;");
+    EXPECT_EQ(watchedLine(src, 6, "x", 6), "    x = 2.; glimmer_watch_store(x);");
+    // The jump after a label is watched before it leaves, as any jump.
+    EXPECT_EQ(watchedLine(src, 7, "x", 7), "  default:  glimmer_watch_store(x); return;");
+    EXPECT_EQ(watchedLine(src, 5, "x", 5),
+              "refused: the line ends with a case label, which runs nothing: watch the line of a statement after it");
+}
+
 TEST(WatchRewrite, ALoneBodyOfAnIfOrLoopGetsBraces) {
     const char* src = "void main() {\n  float s = 0.;\n  for (int i = 0; i < 4; i++)\n    s += float(i);\n"
                       "  if (s > 1.) s = 1.;\n  gl_FragColor = vec4(s);\n}\n";
