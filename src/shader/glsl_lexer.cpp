@@ -127,6 +127,14 @@ std::vector<GlslToken> glslCodeTokens(std::string_view text) {
     return all;
 }
 
+std::vector<GlslToken> directiveTokens(std::string_view directive) {
+    if (directive.empty() || directive[0] != '#') return {};
+    // A blank in its place keeps offsets, and a '#' again cannot start a directive.
+    std::string rest(directive);
+    rest[0] = ' ';
+    return glslCodeTokens(rest);
+}
+
 bool isWordToken(std::string_view text, const std::vector<GlslToken>& tokens, size_t k, std::string_view word) {
     return k < tokens.size() && tokens[k].kind == GlslTokenKind::Word && tokenText(text, tokens[k]) == word;
 }

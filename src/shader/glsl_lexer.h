@@ -60,6 +60,10 @@ std::vector<GlslToken> lexGlsl(std::string_view text);
 // the whole text). Offsets, lines and columns are those of `text`.
 std::vector<GlslToken> glslCodeTokens(std::string_view text);
 
+// The code tokens of a directive's text after its '#' ("#  version 330"
+// -> version, 330), offsets into `directive`; its comments left out.
+std::vector<GlslToken> directiveTokens(std::string_view directive);
+
 // Words, numbers, punctuation and anything else: what is neither blank nor
 // a comment nor a directive.
 inline bool isGlslCode(GlslTokenKind k) {
