@@ -1,8 +1,8 @@
 #include "shader/compat_rewrite.h"
+#include "shader/glsl_lexer.h"
 #include "shader/glsl_scan.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cstdlib>
 #include <set>
 
@@ -45,30 +45,18 @@ const CompatBuiltin* builtinNamed(std::string_view word) {
     return nullptr;
 }
 
-// Skips blanks from `i`; the index of the next other character.
-size_t skipBlanks(std::string_view s, size_t i) {
-    while (i < s.size() && (s[i] == ' ' || s[i] == '\t')) ++i;
-    return i;
-}
-
 }  // namespace
 
 std::map<std::string, std::string> definesOf(std::string_view prelude) {
     std::map<std::string, std::string> out;
-    size_t at = 0;
-    while (at < prelude.size()) {
-        size_t end = prelude.find('\n', at);
-        if (end == std::string_view::npos) end = prelude.size();
-        std::string_view l = prelude.substr(at, end - at);
-        at = end + 1;
-        size_t p = skipBlanks(l, 0);
-        if (l.compare(p, 7, "#define") != 0) continue;
-        p = skipBlanks(l, p + 7);
-        size_t q = p;
-        while (q < l.size() && isGlslWordChar(l[q])) ++q;
-        size_t r = skipBlanks(l, q), e = r;
-        while (e < l.size() && isGlslWordChar(l[e])) ++e;
-        if (q > p && e > r) out[std::string(l.substr(p, q - p))] = std::string(l.substr(r, e - r));
+    for (const GlslToken& t : lexGlsl(prelude)) {
+        if (t.kind != GlslTokenKind::Directive) continue;
+        const std::string_view d = tokenText(prelude, t);
+        const std::vector<GlslToken> w = directiveTokens(d);  // define NAME VALUE
+        if (w.size() < 3 || !isWordToken(d, w, 0, "define") || w[1].kind != GlslTokenKind::Word) continue;
+        // "#define F(x) ..." is a macro with arguments, no alias: its third token is '('.
+        if (w[2].kind != GlslTokenKind::Word && w[2].kind != GlslTokenKind::Number) continue;
+        out[std::string(tokenText(d, w[1]))] = std::string(tokenText(d, w[2]));
     }
     return out;
 }
@@ -92,118 +80,101 @@ CompatRewrite rewriteCompatBuiltins(std::string_view s, CompatStage stage,
         r.renames.emplace(std::string(to), std::string(userSpelling));
     };
 
-    int line = 1;
-    bool lineStart = true;
-    for (size_t i = 0; i < s.size();) {
-        char c = s[i];
-        if (c == '\n') {
-            body += c;
-            ++line;
-            lineStart = true;
-            ++i;
-            continue;
-        }
-        if (c == ' ' || c == '\t' || c == '\r') {
-            body += c;
-            ++i;
-            continue;
-        }
-        if (lineStart && c == '#' && line == r.versionLine) {  // the header says the version now
-            while (i < s.size() && s[i] != '\n') ++i;
-            continue;
-        }
-        lineStart = false;
-        if (size_t end = commentEnd(s, i); end != i) {  // kept as written
-            for (size_t k = i; k < end; ++k) line += s[k] == '\n';
-            body.append(s.substr(i, end - i));
-            i = end;
-            continue;
-        }
-        if (!isGlslWordStart(c)) {  // numbers (1e5, 0x1Fu) whole, so no suffix is read as a word
-            size_t j = i + 1;
-            if (std::isdigit(static_cast<unsigned char>(c)))
-                while (j < s.size() && (isGlslWordChar(s[j]) || s[j] == '.')) ++j;
-            body.append(s.substr(i, j - i));
-            i = j;
-            continue;
-        }
-        size_t j = i;
-        while (j < s.size() && isGlslWordChar(s[j])) ++j;
-        std::string_view spelled = s.substr(i, j - i);
-        std::string_view word = spelled;
-        if (auto a = aliases.find(std::string(word)); a != aliases.end()) word = a->second;
-        i = j;
-
-        if (word == "gl_Point") {  // gl_Point.size: a member, renamed whole
-            size_t dot = skipBlanks(s, j);
-            size_t m = dot < s.size() && s[dot] == '.' ? skipBlanks(s, dot + 1) : std::string_view::npos;
-            if (m != std::string_view::npos && s.compare(m, 4, "size") == 0 && (m + 4 == s.size() || !isGlslWordChar(s[m + 4]))) {
-                const CompatBuiltin& b = compatBuiltin(CompatFeed::PointSize);
-                rename(b.name, "gl_Point");
-                used.insert(b.feed);
-                i = m + 4;
-                continue;
-            }
-        }
-        if (word == "gl_TexCoord") {  // gl_TexCoord[k], k a literal: one varying per index
-            size_t open = skipBlanks(s, j), d = open + 1;
-            if (open < s.size() && s[open] == '[') {
-                d = skipBlanks(s, open + 1);
-                size_t e = d;
-                while (e < s.size() && std::isdigit(static_cast<unsigned char>(s[e]))) ++e;
-                size_t close = skipBlanks(s, e);
-                int k = e > d && e - d < 3 ? std::atoi(std::string(s.substr(d, e - d)).c_str()) : -1;
-                if (k >= 0 && k < kTexCoordCount && close < s.size() && s[close] == ']') {
-                    std::string name = std::string(kTexCoord) + std::to_string(k);
-                    rename(name, "gl_TexCoord");
-                    texCoords.insert(k);
-                    i = close + 1;
-                    continue;
-                }
-            }
-        }
+    // One token at a time: words are renamed, everything else is kept as
+    // written. A directive's own words are renamed too (`#define COLOR
+    // gl_FragColor`), so its text is lexed again, without the '#'.
+    // `k` is advanced past what a rename consumed.
+    // Every other word: its stand-in, its new spelling, or itself.
+    auto renameWord = [&](std::string_view spelled, std::string_view word) {
         if ((vertex && word == "gl_FrontColor") || (!vertex && word == "gl_Color")) {
             rename(kFrontColor, spelled);
             frontColor = true;
-            continue;
-        }
-        if (const CompatBuiltin* b = builtinNamed(word); b && (vertex || !b->attribute)) {
+        } else if (const CompatBuiltin* b = builtinNamed(word); b && (vertex || !b->attribute)) {
             rename(b->name, spelled);
             used.insert(b->feed);
-            continue;
-        }
-        if (!vertex && word == "gl_FragColor") {
+        } else if (!vertex && word == "gl_FragColor") {
             rename(kFragColor, spelled);
             fragColor = true;
-            continue;
-        }
-        if (!vertex && word == "gl_FragData") {
+        } else if (!vertex && word == "gl_FragData") {
             rename(kFragData, spelled);
             fragData = true;
-            continue;
-        }
-        if (vertex && word == "ftransform") {
+        } else if (vertex && word == "ftransform") {
             rename(kFtransform, spelled);
             ftransform = true;
             used.insert(CompatFeed::ModelViewProjection);
             used.insert(CompatFeed::Vertex);
-            continue;
-        }
-        auto tex = std::find_if(std::begin(kTextureRenames), std::end(kTextureRenames),
-                                [&](const TextureRename& t) { return t.from == word; });
-        if (tex != std::end(kTextureRenames)) {
+        } else if (auto tex = std::find_if(std::begin(kTextureRenames), std::end(kTextureRenames),
+                                           [&](const TextureRename& t) { return t.from == word; });
+                   tex != std::end(kTextureRenames)) {
             rename(tex->to, spelled);
-            continue;
-        }
-        if (word == "attribute" && vertex) {
+        } else if (word == "attribute" && vertex) {
             body += "in";
-            continue;
-        }
-        if (word == "varying") {
+        } else if (word == "varying") {
             body += vertex ? "out" : "in";
+        } else {
+            body.append(word);  // an alias to a name with no stand-in is spelled as what it stands for
+        }
+    };
+    auto rewrite = [&](std::string_view text, const std::vector<GlslToken>& toks, size_t from, size_t to) {
+        // The next token from `k` on, blanks on the line skipped; npos past the end.
+        auto next = [&](size_t k) {
+            while (k < to && toks[k].kind == GlslTokenKind::Space) ++k;
+            return k < to ? k : std::string_view::npos;
+        };
+        auto isPunct = [&](size_t k, std::string_view p) { return k != std::string_view::npos && isPunctToken(text, toks, k, p); };
+        for (size_t k = from; k < to; ++k) {
+            const GlslToken& t = toks[k];
+            if (t.kind != GlslTokenKind::Word) {
+                body.append(tokenText(text, t));
+                continue;
+            }
+            const std::string_view spelled = tokenText(text, t);
+            std::string_view word = spelled;
+            if (auto a = aliases.find(std::string(word)); a != aliases.end()) word = a->second;
+            if (word == "gl_Point") {  // gl_Point.size: a member, renamed whole
+                const size_t dot = next(k + 1), m = isPunct(dot, ".") ? next(dot + 1) : std::string_view::npos;
+                if (m != std::string_view::npos && isWordToken(text, toks, m, "size")) {
+                    const CompatBuiltin& b = compatBuiltin(CompatFeed::PointSize);
+                    rename(b.name, "gl_Point");
+                    used.insert(b.feed);
+                    k = m;
+                    continue;
+                }
+            }
+            if (word == "gl_TexCoord") {  // gl_TexCoord[k], k a literal: one varying per index
+                const size_t open = next(k + 1), d = isPunct(open, "[") ? next(open + 1) : std::string_view::npos;
+                const size_t close = d == std::string_view::npos ? d : next(d + 1);
+                const std::string_view digits = d != std::string_view::npos && toks[d].kind == GlslTokenKind::Number
+                                                    ? tokenText(text, toks[d]) : "";
+                const bool literal = !digits.empty() && digits.size() < 3 &&
+                                     std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; });
+                const int index = literal ? std::atoi(std::string(digits).c_str()) : -1;
+                if (index >= 0 && index < kTexCoordCount && isPunct(close, "]")) {
+                    rename(std::string(kTexCoord) + std::to_string(index), "gl_TexCoord");
+                    texCoords.insert(index);
+                    k = close;
+                    continue;
+                }
+            }
+            renameWord(spelled, word);
+        }
+    };
+    const std::vector<GlslToken> tokens = lexGlsl(s);
+    size_t run = 0;  // the first token not yet rewritten
+    for (size_t k = 0; k <= tokens.size(); ++k) {
+        if (k < tokens.size() && tokens[k].kind != GlslTokenKind::Directive) continue;
+        rewrite(s, tokens, run, k);
+        run = k + 1;
+        if (k == tokens.size()) break;
+        const std::string_view text = tokenText(s, tokens[k]);
+        if (tokens[k].line == r.versionLine) {  // the header says the version now; its lines stay
+            body.append(size_t(std::count(text.begin(), text.end(), '\n')), '\n');
             continue;
         }
-        body.append(word);  // an alias to a name with no stand-in is spelled as what it stands for
+        body += '#';
+        const std::string_view rest = text.substr(1);
+        const std::vector<GlslToken> inDirective = lexGlsl(rest);
+        rewrite(rest, inDirective, 0, inDirective.size());
     }
 
     // The header: a version glslang compiles for OpenGL SPIR-V, then what
