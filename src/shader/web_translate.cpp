@@ -1,7 +1,6 @@
 #include "shader/web_translate.h"
 
 #include <algorithm>
-#include <cctype>
 #include <exception>
 #include <mutex>
 #include <vector>
@@ -13,6 +12,7 @@
 
 #include "shader/compat_builtins.h"
 #include "shader/compat_rewrite.h"
+#include "shader/glsl_lexer.h"
 #include "shader/glsl_scan.h"
 #include "shader/glslang_log.h"
 
@@ -64,15 +64,18 @@ bool compileToSpirv(const CompatRewrite& rewritten, EShLanguage language, const 
     return !spirv.empty();
 }
 
-// The identifier that ends just before column `col` of line `line` (the
-// name a "global const initializers" error stands after): "k2".
+// The identifier that ends just before column `col` of line `line`, blanks
+// between (the name a "global const initializers" error stands after): "k2".
+// Read from the lexer's tokens, so a number ("2.5") or a comment before the
+// column is no name; a word the column cuts is taken up to the column.
 std::string nameBefore(std::string_view text, int line, int col) {
-    std::string_view l = lineOf(text, line);
-    size_t end = std::min(l.size(), size_t(std::max(col - 1, 0)));
-    while (end > 0 && (l[end - 1] == ' ' || l[end - 1] == '\t')) --end;
-    size_t start = end;
-    while (start > 0 && (std::isalnum(static_cast<unsigned char>(l[start - 1])) || l[start - 1] == '_')) --start;
-    return std::string(l.substr(start, end - start));
+    std::string_view name;
+    for (const GlslToken& t : lexGlsl(text)) {
+        if (t.line > line || (t.line == line && t.col >= col)) break;
+        if (t.line < line || t.kind == GlslTokenKind::Space) continue;
+        name = t.kind == GlslTokenKind::Word ? tokenText(text, t).substr(0, size_t(col - t.col)) : std::string_view();
+    }
+    return std::string(name);
 }
 
 // NVIDIA's leniency, as the desktop has it (gl/shader_build.cpp): a const

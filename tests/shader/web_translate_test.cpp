@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "shader/compat_builtins.h"
+#include "shader/glsl_scan.h"
 #include "shader/web_translate.h"
 
 using namespace glimmer;
@@ -289,6 +290,19 @@ TEST(WebTranslate, GarbageIsAnErrorNotACrash) {
             EXPECT_GE(r.diags.errorCount(), 1);
         }
     }
+}
+
+// Issue 37: a global const set from a uniform loses its 'const', and the
+// warning names it: the word before the column glslang points at, blanks
+// between, never a number or a word cut short.
+TEST(WebTranslate, AGlobalConstFromAUniformIsDroppedAndNamedInTheWarning) {
+    const std::string head = "#version 330 compatibility\nuniform float uK;\n";
+    Result r = translate(head + "const float k2 \t = uK * 2.;\nvoid main() { gl_FragColor = vec4(k2); }\n", WebStage::Fragment);
+    ASSERT_TRUE(r.t.ok) << r.printed();
+    EXPECT_EQ(r.printed(), "user.glsl:3:18: " + globalConstDropped("`k2'") + "\n");
+    r = translate(head + "const vec4 k_3=vec4(uK);\nvoid main() { gl_FragColor = k_3; }\n", WebStage::Fragment);
+    ASSERT_TRUE(r.t.ok) << r.printed();
+    EXPECT_EQ(r.printed(), "user.glsl:3:15: " + globalConstDropped("`k_3'") + "\n");
 }
 
 TEST(WebTranslate, IsGlslEs300ReadsTheVersionLine) {
