@@ -1,19 +1,12 @@
 #include "shader/uniform_initializers.h"
 
+#include <algorithm>
 
-#include "shader/glsl_scan.h"
+#include "shader/glsl_lexer.h"
 #include "util/numbers.h"
 
 namespace glimmer {
 namespace {
-
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n'; }
-
-std::string_view trim(std::string_view s) {
-    while (!s.empty() && isBlank(s.front())) s.remove_prefix(1);
-    while (!s.empty() && isBlank(s.back())) s.remove_suffix(1);
-    return s;
-}
 
 // Components of a scalar or vector type; 0 for any other.
 int components(std::string_view type) {
@@ -26,140 +19,118 @@ int components(std::string_view type) {
     return 0;
 }
 
-bool number(std::string_view s, float& out) {
-    s = trim(s);
-    if (s == "true" || s == "false") {
-        out = s == "true" ? 1.f : 0.f;
+// The code tokens of one value, [from, to) of `tokens`, read from `text`.
+struct Value {
+    std::string_view text;
+    const std::vector<GlslToken>& tokens;
+    size_t from, to;
+    bool punct(size_t k, std::string_view p) const { return k < to && isPunctToken(text, tokens, k, p); }
+    std::string_view at(size_t k) const { return tokenText(text, tokens[k]); }
+};
+
+// One constant at token `k`: true, false, or a Number with an optional '-'
+// before it. `k` moves past it; false when there is none.
+bool number(const Value& v, size_t& k, float& out) {
+    if (k < v.to && v.tokens[k].kind == GlslTokenKind::Word && (v.at(k) == "true" || v.at(k) == "false")) {
+        out = v.at(k++) == "true" ? 1.f : 0.f;
         return true;
     }
-    if (!s.empty() && (s.back() == 'f' || s.back() == 'F' || s.back() == 'u' || s.back() == 'U')) s.remove_suffix(1);
+    const bool minus = v.punct(k, "-");
+    const size_t n = k + (minus ? 1 : 0);
+    if (n >= v.to || v.tokens[n].kind != GlslTokenKind::Number) return false;
+    std::string_view s = v.at(n);
+    if (s.back() == 'f' || s.back() == 'F' || s.back() == 'u' || s.back() == 'U') s.remove_suffix(1);
     if (s.empty() || s.size() > 64) return false;
-    double v = 0;  // never strtof: in a decimal-comma locale it stops at the '.'
-    ParsedNumber p = parseDouble(s.data(), s.data() + s.size(), v);
-    if (p.ec != std::errc() || p.end != s.data() + s.size() || !(v >= -3.4e38 && v <= 3.4e38)) return false;
-    out = float(v);
+    double d = 0;  // never strtof: in a decimal-comma locale it stops at the '.'
+    ParsedNumber p = parseDouble(s.data(), s.data() + s.size(), d);
+    if (p.ec != std::errc() || p.end != s.data() + s.size() || !(d >= 0 && d <= 3.4e38)) return false;
+    out = float(minus ? -d : d);
+    k = n + 1;
     return true;
 }
 
-// The values of `init` for a `type`; false when it is not a plain constant.
-bool readValue(std::string_view type, std::string_view init, std::vector<float>& values) {
+// The values of a `type` set to `v`; false when it is not a plain constant
+// or a constructor of one ("vec3(0., .5, 1.)", "vec4(.25)").
+bool readValue(std::string_view type, const Value& v, std::vector<float>& values) {
     const int n = components(type);
+    size_t k = v.from;
+    float x = 0;
     if (n == 0) return false;
-    init = trim(init);
-    float v = 0;
-    if (number(init, v)) {
-        if (n != 1) return false;
-        values = {v};
-        return true;
+    if (number(v, k, x)) {
+        values = {x};
+        return n == 1 && k == v.to;
     }
-    size_t open = init.find('(');
-    if (open == std::string_view::npos || init.back() != ')' || components(trim(init.substr(0, open))) != n) return false;
-    std::string_view args = init.substr(open + 1, init.size() - open - 2);
-    for (size_t at = 0; at <= args.size();) {
-        size_t comma = args.find(',', at);
-        if (comma == std::string_view::npos) comma = args.size();
-        if (!number(args.substr(at, comma - at), v)) return false;
-        values.push_back(v);
-        at = comma + 1;
+    if (k >= v.to || v.tokens[k].kind != GlslTokenKind::Word || components(v.at(k)) != n || !v.punct(k + 1, "(") ||
+        !v.punct(v.to - 1, ")"))
+        return false;
+    for (k += 2; k < v.to; ++k) {  // number, ',' ... ')'
+        if (!number(v, k, x)) return false;
+        values.push_back(x);
+        if (!v.punct(k, ",")) break;
     }
+    if (k != v.to - 1) return false;
     if (values.size() == 1 && n > 1) values.assign(size_t(n), values[0]);  // vec3(1.)
     return int(values.size()) == n;
 }
 
-struct Place {
-    int line, col;
-};
-
 }  // namespace
 
+// One pass over the lexer's code tokens (comments and directives are not
+// among them): at brace depth 0 each `uniform` statement is split into its
+// declarators, and each " = VALUE" is read and blanked by offsets.
 UniformInitializers takeUniformInitializers(std::string_view source) {
     UniformInitializers out;
-    out.text = std::string(source);
-    std::string& s = out.text;
-    // Line and column of every offset are found by counting as we go.
-    std::vector<size_t> lineStarts{0};
-    for (size_t i = 0; i < s.size(); ++i)
-        if (s[i] == '\n') lineStarts.push_back(i + 1);
-    auto placeOf = [&](size_t at) {
-        size_t lo = 0, hi = lineStarts.size();
-        while (hi - lo > 1) {
-            size_t mid = (lo + hi) / 2;
-            (lineStarts[mid] <= at ? lo : hi) = mid;
-        }
-        return Place{int(lo + 1), int(at - lineStarts[lo] + 1)};
-    };
+    const std::vector<GlslToken> t = glslCodeTokens(source);
+    auto punct = [&](size_t k, std::string_view p) { return isPunctToken(source, t, k, p); };
+    std::vector<GlslEdit> blanks;
     int depth = 0;  // of braces: only declarations at file scope are uniforms
-    bool lineStart = true;
-    for (size_t i = 0; i < s.size();) {
-        const char c = s[i];
-        if (size_t end = commentEnd(s, i); end != i) {
-            i = end;
-            continue;
-        }
-        if (c == '#' && lineStart) {  // a preprocessor line (continued lines aside)
-            i = s.find('\n', i);
-            if (i == std::string::npos) break;
-            continue;
-        }
-        if (c == '\n') lineStart = true;
-        else if (!isBlank(c)) lineStart = false;
-        if (c == '{') ++depth;
-        if (c == '}' && depth > 0) --depth;
-        if (!isGlslWordStart(c) || (i > 0 && isGlslWordChar(s[i - 1]))) {
-            ++i;
-            continue;
-        }
-        size_t end = i;
-        while (end < s.size() && isGlslWordChar(s[end])) ++end;
-        if (depth != 0 || s.compare(i, end - i, "uniform") != 0) {
-            i = end;
-            continue;
-        }
+    for (size_t k = 0; k < t.size(); ++k) {
+        if (punct(k, "{")) ++depth;
+        if (punct(k, "}") && depth > 0) --depth;
+        if (depth != 0 || !isWordToken(source, t, k, "uniform")) continue;
         // The statement: up to ';' at parenthesis depth 0 (a block's braces end it too).
-        size_t stop = end;
-        int parens = 0;
-        while (stop < s.size() && !(parens == 0 && (s[stop] == ';' || s[stop] == '{'))) {
-            parens += s[stop] == '(';
-            parens -= s[stop] == ')';
-            ++stop;
-        }
-        if (stop >= s.size() || s[stop] == '{') {  // a uniform block, or no end
-            i = stop;
+        size_t stop = k + 1;
+        for (int parens = 0; stop < t.size() && !(parens == 0 && (punct(stop, ";") || punct(stop, "{"))); ++stop)
+            parens += punct(stop, "(") ? 1 : punct(stop, ")") ? -1 : 0;
+        if (stop >= t.size()) break;  // no end
+        if (punct(stop, "{")) {       // a uniform block: its '{' is counted next
+            k = stop - 1;
             continue;
         }
         // Declarators split at depth-0 commas: the first carries the type.
         std::string type;
-        size_t from = end;
-        for (size_t k = end; k <= stop; ++k) {
-            if (k < stop && s[k] == '(') ++parens;
-            if (k < stop && s[k] == ')') --parens;
-            if (k < stop && !(parens == 0 && s[k] == ',')) continue;
-            std::string_view decl(s.data() + from, k - from);
-            size_t eq = decl.find('=');
-            std::string_view left = decl.substr(0, eq);
-            const bool array = left.find('[') != std::string_view::npos;
+        int parens = 0;
+        for (size_t from = k + 1, d = from; d <= stop; ++d) {
+            parens += d < stop && punct(d, "(") ? 1 : d < stop && punct(d, ")") ? -1 : 0;
+            if (d < stop && !(parens == 0 && punct(d, ","))) continue;
+            size_t eq = from, bracket = d;
+            while (eq < d && !punct(eq, "=")) ++eq;
+            for (size_t w = from; w < eq && bracket == d; ++w)
+                if (punct(w, "[")) bracket = w;
             // The words before '=' (and an array's size): [precision] TYPE NAME, or NAME after a comma.
-            left = left.substr(0, left.find('['));
-            const std::vector<std::string_view> words = glslWords(left);
+            std::vector<std::string_view> words;
+            for (size_t w = from; w < std::min(eq, bracket); ++w)
+                if (t[w].kind == GlslTokenKind::Word) words.push_back(tokenText(source, t[w]));
             if (type.empty() && words.size() >= 2) type = std::string(words[words.size() - 2]);
-            if (eq != std::string_view::npos && !words.empty()) {
+            if (eq < d && !words.empty()) {
                 UniformInitializer u;
                 u.name = std::string(words.back());
                 u.type = type;
-                size_t valueAt = from + eq + 1;
-                while (valueAt < k && isBlank(s[valueAt])) ++valueAt;
-                Place p = placeOf(valueAt);
-                u.line = p.line;
-                u.col = p.col;
-                if (!array && readValue(type, decl.substr(eq + 1), u.values)) out.values.push_back(std::move(u));
+                u.line = t[eq + 1].line;  // the value's first token, or the ',' or ';' when there is none
+                u.col = t[eq + 1].col;
+                if (bracket == d && readValue(type, Value{source, t, eq + 1, d}, u.values)) out.values.push_back(std::move(u));
                 else out.unreadable.push_back(std::move(u));
-                for (size_t b = from + eq; b < k; ++b)
-                    if (s[b] != '\n') s[b] = ' ';
+                // Blanked from '=' to the ',' or ';', comments and all; newlines kept.
+                GlslEdit e{t[eq].begin, t[d].begin - t[eq].begin, std::string(source.substr(t[eq].begin, t[d].begin - t[eq].begin))};
+                for (char& c : e.insert)
+                    if (c != '\n') c = ' ';
+                blanks.push_back(std::move(e));
             }
-            from = k + 1;
+            from = d + 1;
         }
-        i = stop + 1;
+        k = stop;
     }
+    out.text = applyGlslEdits(source, std::move(blanks));
     return out;
 }
 

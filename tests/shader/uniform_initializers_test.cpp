@@ -83,6 +83,16 @@ TEST(UniformInitializers, AnExpressionOrArrayIsUnreadableWithItsPlace) {
     EXPECT_EQ(r.unreadable[2].name, "v");
 }
 
+// A value over two lines keeps the line break (the lines after it keep
+// their numbers), and a comment inside it is no part of the value.
+TEST(UniformInitializers, AValueOverLinesKeepsItsNewlineAndSkipsItsComments) {
+    UniformInitializers r = takeUniformInitializers("uniform vec3 uC = vec3(1., /* red */\n  0., 0.);\nuniform float uS;\n");
+    ASSERT_EQ(r.values.size(), 1u);
+    EXPECT_EQ(r.values[0].values, std::vector<float>({1.f, 0.f, 0.f}));
+    EXPECT_EQ(r.values[0].col, 19);
+    EXPECT_EQ(r.text, "uniform vec3 uC                     \n         ;\nuniform float uS;\n");
+}
+
 TEST(UniformInitializers, AnUnendedStatementOrBlockStopsQuietly) {
     EXPECT_TRUE(takeUniformInitializers("uniform float k = 1.").values.empty());
     EXPECT_TRUE(takeUniformInitializers("uniform Block { float x; };").values.empty());
