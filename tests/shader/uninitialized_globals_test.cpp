@@ -41,5 +41,13 @@ TEST(UninitializedGlobals, TheTrueOnesStay) {
               0);
 }
 
+// An element set through an index that has brackets of its own is set; a
+// call in a comment or a directive is no call.
+TEST(UninitializedGlobals, AnIndexedElementIsSetPastCommentsAndDirectives) {
+    const std::string text = "float g[2];\nint ij[2] = int[2](0, 1);\n#define CALL f()\nfloat f() { return g[0]; }\n"
+                             "void main() {\n    /* f(); */ g[ij[0]] = 1.;\n    gl_FragColor = vec4(f());\n}\n";
+    EXPECT_EQ(globalSetByMainFirst(text, "g", 4), 6);
+}
+
 }  // namespace
 }  // namespace glimmer
