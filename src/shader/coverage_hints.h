@@ -8,12 +8,13 @@ namespace glimmer {
 
 // The vertex shader places vertices exactly where the fixed-function
 // transform would: its only write of gl_Position is
-// `gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;` (spaces aside)
-// or `= ftransform();`.
+// `gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex;` (spaces and
+// comments aside) or `= ftransform();`, and no directive names gl_Position.
 bool keepsPlainTransform(const std::string& vertexText);
 
 // The fragment shader may leave pixels unwritten: the word `discard`
-// appears anywhere in it (comments included: a false "maybe" costs only the Clear).
+// appears in its code or in a directive (`#define KILL discard`); one in a
+// comment is not code (and a false "maybe" would cost only the Clear).
 bool mayDiscard(const std::string& fragmentText);
 
 }  // namespace glimmer

@@ -32,4 +32,18 @@ TEST(CoverageHints, DiscardAsAWordOnly) {
     EXPECT_FALSE(mayDiscard("void main() { gl_FragColor = vec4(1.); }"));
 }
 
+// Read through the lexer: a comment is no code, a directive's words are
+// (a macro's body is code wherever it is used).
+TEST(CoverageHints, CommentsAreNotCodeAndDirectivesAre) {
+    EXPECT_TRUE(mayDiscard("#define KILL discard\nvoid main() { if (a < .5) KILL; }"));
+    EXPECT_FALSE(mayDiscard("// never discard: it slows the tiler\nvoid main() { gl_FragColor = vec4(1.); }"));
+    EXPECT_TRUE(keepsPlainTransform("void main() {\n  // gl_Position = vec4(0.);\n"
+                                    "  gl_Position = /* fixed */ gl_ModelViewProjectionMatrix * gl_Vertex;\n}\n"));
+    EXPECT_FALSE(keepsPlainTransform("#define MOVE gl_Position.x += .1\n"
+                                     "void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; MOVE; }"));
+    // Which ';' ends it depends on a macro: not vouched for.
+    EXPECT_FALSE(keepsPlainTransform("void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex\n"
+                                     "#ifdef PLAIN\n  ;\n#else\n  * 2.;\n#endif\n}"));
+}
+
 }  // namespace
