@@ -1,42 +1,45 @@
 #include "shader/uniform_declaration.h"
-#include "shader/glsl_scan.h"
 
-#include <cctype>
+#include <string_view>
+#include <vector>
+
+#include "shader/glsl_lexer.h"
 
 namespace glimmer {
 namespace {
 
-// Whether `word` occurs in `s` from `from` on as a whole word; its end in `at`.
-bool hasWord(const std::string& s, const std::string& word, size_t from, size_t& at) {
-    for (size_t i = s.find(word, from); i != std::string::npos; i = s.find(word, i + 1)) {
-        if (isWholeWordAt(s, i, word.size())) {
-            at = i + word.size();
-            return true;
-        }
+// Whether code tokens `t` of `text` hold `uniform` and then `name` on the
+// same line, before the ';' that ends it; its line in `line`.
+bool declares(std::string_view text, const std::vector<GlslToken>& t, std::string_view name, int& line) {
+    for (size_t k = 0; k < t.size(); ++k) {
+        if (!isWordToken(text, t, k, "uniform")) continue;
+        // A declaration split over lines is not found: the warning shows one line.
+        for (size_t n = k + 1; n < t.size() && t[n].line == t[k].line && !isPunctToken(text, t, n, ";"); ++n)
+            if (isWordToken(text, t, n, name)) {
+                line = t[k].line;
+                return true;
+            }
     }
     return false;
 }
 
 }  // namespace
 
+// A pass over the lexer's tokens: comments are skipped; a directive's words
+// are read too (`#define DECLARE uniform float uKd;` is where it is written).
+// A directive has lines of its own, so the code before it is read first.
 int uniformDeclarationLine(const std::string& text, const std::string& name) {
-    // Comments become blanks, as the compiler reads them (a block comment may
-    // span lines; the line numbers stay).
-    const std::string code = blankComments(text);
-    int line = 1;
-    for (size_t start = 0; start <= code.size(); ++line) {
-        size_t end = code.find('\n', start);
-        if (end == std::string::npos) end = code.size();
-        const std::string one = code.substr(start, end - start);
-        size_t afterUniform = 0, afterName = 0;
-        if (hasWord(one, "uniform", 0, afterUniform) && hasWord(one, name, afterUniform, afterName)) {
-            size_t semicolon = one.find(';', afterUniform);
-            if (semicolon == std::string::npos || afterName <= semicolon) return line;
-        }
-        if (end == code.size()) break;
-        start = end + 1;
+    std::vector<GlslToken> code;
+    int line = 0;
+    for (const GlslToken& t : lexGlsl(text)) {
+        if (isGlslCode(t.kind)) code.push_back(t);
+        if (t.kind != GlslTokenKind::Directive) continue;
+        if (declares(text, code, name, line)) return line;
+        code.clear();
+        const std::string_view directive = tokenText(text, t);
+        if (declares(directive, directiveTokens(directive), name, line)) return t.line + line - 1;  // of its own lines
     }
-    return 0;
+    return declares(text, code, name, line) ? line : 0;
 }
 
 }  // namespace glimmer

@@ -23,5 +23,13 @@ TEST(UniformDeclaration, FindsTheLineOutsideComments) {
     EXPECT_EQ(uniformDeclarationLine("float uKd = 1.; uniform float uX;", "uKd"), 0);  // not after 'uniform'
 }
 
+// Each 'uniform' on a line is its own declaration, up to its own ';'; one
+// in a directive is found where it is written.
+TEST(UniformDeclaration, EachUniformOfALineReadsToItsSemicolon) {
+    EXPECT_EQ(uniformDeclarationLine("uniform float uA; uniform float uKd;\n", "uKd"), 1);
+    EXPECT_EQ(uniformDeclarationLine("uniform float uA; float uKd;\n", "uKd"), 0);  // a global, not a uniform
+    EXPECT_EQ(uniformDeclarationLine("// uKd\n#define DECLARE \\\n  uniform float uKd;\nDECLARE\n", "uKd"), 3);
+}
+
 }  // namespace
 }  // namespace glimmer
