@@ -129,9 +129,13 @@ std::vector<GlslToken> glslCodeTokens(std::string_view text) {
 
 std::vector<GlslToken> directiveTokens(std::string_view directive) {
     if (directive.empty() || directive[0] != '#') return {};
-    // A blank in its place keeps offsets, and a '#' again cannot start a directive.
+    // A blank in its place keeps offsets, and a '#' again cannot start a
+    // directive. A '\' that continues a line is a blank too, as for the
+    // preprocessor ("#version \<newline> 150" is version, 150).
     std::string rest(directive);
     rest[0] = ' ';
+    for (size_t k = 0; k < rest.size(); ++k)
+        if (rest[k] == '\\' && (rest.compare(k + 1, 1, "\n") == 0 || rest.compare(k + 1, 2, "\r\n") == 0)) rest[k] = ' ';
     return glslCodeTokens(rest);
 }
 

@@ -61,7 +61,8 @@ std::vector<GlslToken> lexGlsl(std::string_view text);
 std::vector<GlslToken> glslCodeTokens(std::string_view text);
 
 // The code tokens of a directive's text after its '#' ("#  version 330"
-// -> version, 330), offsets into `directive`; its comments left out.
+// -> version, 330), offsets into `directive`; its comments and the '\' of
+// each continued line left out.
 std::vector<GlslToken> directiveTokens(std::string_view directive);
 
 // Words, numbers, punctuation and anything else: what is neither blank nor

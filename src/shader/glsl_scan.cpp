@@ -2,117 +2,47 @@
 
 #include <algorithm>
 
+#include "shader/glsl_lexer.h"
+
 namespace glimmer {
 namespace {
 
-size_t skipBlanks(std::string_view s, size_t i) {
-    while (i < s.size() && (s[i] == ' ' || s[i] == '\t' || s[i] == '\r')) ++i;
-    return i;
+bool isDigits(std::string_view s) {
+    return !s.empty() && std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
 }
 
-bool isDigit(char c) { return c >= '0' && c <= '9'; }
-
-// Reads the directive's words after "#version" on line `l` (from `p`).
-void readVersion(std::string_view l, size_t p, GlslVersion& v) {
-    p = skipBlanks(l, p);
+// The number of a #version directive's Number token: its leading digits,
+// saturated (never std::stoi, which throws on 20 digits); -1 when none.
+int versionNumber(std::string_view number) {
     long long n = 0;
-    size_t digits = p;
-    while (p < l.size() && isDigit(l[p])) {
-        n = n * 10 + (l[p] - '0');
-        if (n > kMaxGlslVersionNumber) n = kMaxGlslVersionNumber;  // saturate: never overflow
-        ++p;
-    }
-    if (p > digits) v.number = int(n);
-    else v.wellFormed = false;
-    p = skipBlanks(l, p);
-    size_t q = p;
-    while (q < l.size() && isGlslWordChar(l[q])) ++q;
-    v.profile = std::string(l.substr(p, q - p));
-    q = skipBlanks(l, q);
-    if (q < l.size() && l.compare(q, 2, "//") != 0) v.wellFormed = false;
+    size_t k = 0;
+    for (; k < number.size() && number[k] >= '0' && number[k] <= '9'; ++k)
+        n = std::min<long long>(n * 10 + (number[k] - '0'), kMaxGlslVersionNumber);
+    return k == 0 ? -1 : int(n);
 }
 
 }  // namespace
 
-size_t commentEnd(std::string_view s, size_t i) {
-    if (i + 1 >= s.size() || s[i] != '/') return i;
-    if (s[i + 1] == '/') {
-        size_t end = s.find('\n', i);
-        return end == std::string_view::npos ? s.size() : end;
-    }
-    if (s[i + 1] == '*') {
-        size_t end = s.find("*/", i + 2);
-        return end == std::string_view::npos ? s.size() : end + 2;
-    }
-    return i;
-}
-
-std::string blankComments(std::string_view text) {
-    std::string s(text);
-    for (size_t i = 0; i < s.size();) {
-        size_t end = commentEnd(s, i);
-        if (end == i) {
-            ++i;
-            continue;
-        }
-        for (; i < end; ++i)
-            if (s[i] != '\n') s[i] = ' ';
-    }
-    return s;
-}
-
-bool isWholeWordAt(std::string_view text, size_t at, size_t length) {
-    if (at > text.size() || length > text.size() - at) return false;
-    bool before = at > 0 && isGlslWordChar(text[at - 1]);
-    bool after = at + length < text.size() && isGlslWordChar(text[at + length]);
-    return !before && !after;
-}
-
+// The first Directive token of the lexer whose first word is `version`: a
+// directive in a comment is inside the comment's token, so it never counts.
 GlslVersion glslVersionOf(std::string_view s) {
     GlslVersion v;
-    size_t lineStart = 0;
-    int line = 1;
-    bool inBlockComment = false;
-    while (lineStart <= s.size()) {
-        size_t end = s.find('\n', lineStart);
-        if (end == std::string_view::npos) end = s.size();
-        std::string_view l = s.substr(lineStart, end - lineStart);
-        if (!inBlockComment) {
-            size_t p = skipBlanks(l, 0);
-            if (p < l.size() && l[p] == '#') {
-                p = skipBlanks(l, p + 1);
-                if (l.compare(p, 7, "version") == 0 && (p + 7 == l.size() || !isGlslWordChar(l[p + 7]))) {
-                    readVersion(l, p + 7, v);
-                    v.line = line;
-                    return v;
-                }
-            }
-        }
-        // Only a block comment may hide a #version line.
-        for (size_t k = 0; k + 1 < l.size(); ++k) {
-            if (!inBlockComment && l[k] == '/' && l[k + 1] == '/') break;
-            if (!inBlockComment && l[k] == '/' && l[k + 1] == '*') inBlockComment = true, ++k;
-            else if (inBlockComment && l[k] == '*' && l[k + 1] == '/') inBlockComment = false, ++k;
-        }
-        lineStart = end + 1;
-        ++line;
+    for (const GlslToken& t : lexGlsl(s)) {
+        if (t.kind != GlslTokenKind::Directive) continue;
+        const std::string_view d = tokenText(s, t);
+        const std::vector<GlslToken> w = directiveTokens(d);  // version NUMBER [PROFILE], comments left out
+        if (!isWordToken(d, w, 0, "version")) continue;
+        v.line = t.line;
+        size_t k = 1;
+        const int number = k < w.size() && w[k].kind == GlslTokenKind::Number ? versionNumber(tokenText(d, w[k])) : -1;
+        if (number >= 0) v.number = number;
+        v.wellFormed = number >= 0 && isDigits(tokenText(d, w[k]));  // not "150core", "1.5"
+        if (number >= 0) ++k;
+        if (k < w.size() && w[k].kind == GlslTokenKind::Word) v.profile = std::string(tokenText(d, w[k++]));
+        if (k < w.size()) v.wellFormed = false;  // anything after the profile
+        return v;
     }
     return v;
-}
-
-std::vector<std::string_view> glslWords(std::string_view text) {
-    std::vector<std::string_view> out;
-    for (size_t i = 0; i < text.size();) {
-        if (!isGlslWordChar(text[i])) {
-            ++i;
-            continue;
-        }
-        size_t j = i;
-        while (j < text.size() && isGlslWordChar(text[j])) ++j;
-        out.push_back(text.substr(i, j - i));
-        i = j;
-    }
-    return out;
 }
 
 size_t lineStartOf(std::string_view text, int line) {
@@ -148,18 +78,15 @@ std::string globalConstDropped(const std::string& quoted) {
                     "set when the shader starts, as NVIDIA's driver does; remove 'const' to run everywhere";
 }
 
+// The last code token `const` on the line before the column: one in a
+// comment or a directive is not the declaration's.
 std::string withoutConstBefore(std::string text, int line, int col) {
-    const size_t start = lineStartOf(text, line);
-    if (start == std::string::npos) return text;
-    size_t end = std::min(text.find('\n', start), start + size_t(std::max(col - 1, 0)));
-    if (end == std::string::npos) end = text.size();
-    for (size_t at = text.rfind("const", end); at != std::string::npos && at >= start;
-         at = at == 0 ? std::string::npos : text.rfind("const", at - 1)) {
-        if (isWholeWordAt(text, at, 5)) {
-            text.replace(at, 5, "     ");
-            break;
-        }
+    size_t at = std::string::npos;
+    for (const GlslToken& t : glslCodeTokens(text)) {
+        if (t.line > line || (t.line == line && t.col >= col)) break;
+        if (t.line == line && t.kind == GlslTokenKind::Word && tokenText(text, t) == "const") at = t.begin;
     }
+    if (at != std::string::npos) text.replace(at, 5, "     ");
     return text;
 }
 

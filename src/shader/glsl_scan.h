@@ -1,18 +1,19 @@
-// The small pieces of GLSL scanning every shader rewrite and check needs,
-// written once: what a word character is, the #version directive, and the
-// words of a text. Each is one bounded loop over the text, never a regular
-// expression: std::regex recurses per character and overflowed the stack on
-// a 30,000-character line (issue 30), and a student's shader is untrusted.
+// The small pieces of GLSL reading every shader rewrite and check needs,
+// written once: what a word character is, the #version directive, lines,
+// and NVIDIA's const leniency. What reads GLSL goes through the one lexer
+// (shader/glsl_lexer.h), never a walk of its own over characters and never
+// a regular expression: std::regex recurses per character and overflowed
+// the stack on a 30,000-character line (issue 30), and a student's shader is
+// untrusted.
 //
 // Contract:
-//   - Nothing here allocates more than the text it returns, recurses, or
-//     throws; every input, however long or odd, gets an answer.
+//   - Nothing here recurses or throws; every input, however long or odd,
+//     gets an answer in time linear in its size.
 //   - Numbers are saturated, never converted with std::stoi (which throws on
 //     "#version 99999999999999999999").
 #pragma once
 #include <string>
 #include <string_view>
-#include <vector>
 
 namespace glimmer {
 
@@ -24,15 +25,11 @@ inline bool isGlslWordChar(char c) {
 // A letter or underscore: what may start a GLSL identifier.
 inline bool isGlslWordStart(char c) { return isGlslWordChar(c) && !(c >= '0' && c <= '9'); }
 
-// Whether `word` stands at `at` of `text` as a whole word (no word character
-// on either side).
-bool isWholeWordAt(std::string_view text, size_t at, size_t length);
-
 // The shader's #version directive: its number (110 when none; saturated at
 // kMaxGlslVersionNumber), its profile word ("" when none) and its 1-based line
 // (0 when none). Only the first directive counts, as for the compiler; one in
-// a block comment does not. `wellFormed` is false when something other than
-// blanks or a // comment follows the profile word.
+// a comment does not. `wellFormed` is false when the number is not all
+// digits or something other than blanks or comments follows the profile.
 constexpr int kMaxGlslVersionNumber = 999999;
 struct GlslVersion {
     int number = 110;
@@ -41,19 +38,6 @@ struct GlslVersion {
     bool wellFormed = true;
 };
 GlslVersion glslVersionOf(std::string_view source);
-
-// Where a comment that starts at `i` of `text` ends: past the "*/" of a
-// block comment (the text's end when it never closes), at the '\n' that ends
-// a line comment (not past it: the newline is not the comment's); `i` itself
-// when no comment starts there. Every rewrite skips comments through this.
-size_t commentEnd(std::string_view text, size_t i);
-
-// `text` with every comment blanked (each character a space, newlines
-// kept), so offsets, lines and columns stay those of the original.
-std::string blankComments(std::string_view text);
-
-// The words of `text` (runs of word characters), in order, as views into it.
-std::vector<std::string_view> glslWords(std::string_view text);
 
 // Where line `line` (1-based) of `text` starts; npos when the text has fewer
 // lines. lineOf: that line without its '\n' ("" when there is none).
@@ -70,6 +54,7 @@ std::string globalConstDropped(const std::string& quoted);
 
 // The first whole word of `text` that starts with `prefix` ("gl_" finds
 // "gl_Vertex" in "'gl_Vertex' : undeclared identifier"); "" when none.
+// It reads a compiler's log message, not GLSL, so not through the lexer.
 std::string firstWordWithPrefix(std::string_view text, std::string_view prefix);
 
 }  // namespace glimmer

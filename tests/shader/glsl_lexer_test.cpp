@@ -122,6 +122,16 @@ TEST(GlslLexer, CodeTokensLeaveOutBlanksCommentsAndDirectives) {
     EXPECT_EQ(words, "void main ( ) { } ");
 }
 
+// A directive's own words: after its '#', comments and the '\' of each
+// continued line left out, offsets into the directive.
+TEST(GlslLexer, DirectiveTokensAreItsWordsAcrossContinuations) {
+    const std::string_view d = "#  define F(x) \\\r\n  (x /* y */ + 1) \\\n// z";
+    std::string words;
+    for (const GlslToken& t : directiveTokens(d)) words += std::string(tokenText(d, t)) + "@" + std::to_string(t.begin) + " ";
+    EXPECT_EQ(words, "define@3 F@10 (@11 x@12 )@13 (@20 x@21 +@31 1@33 )@34 ");
+    EXPECT_TRUE(directiveTokens("define A").empty());  // no '#': no directive
+}
+
 TEST(GlslLexer, BracketsMatchByKind) {
     const std::string_view text = "f(a[1], {b)} )";
     const std::vector<GlslToken> code = glslCodeTokens(text);

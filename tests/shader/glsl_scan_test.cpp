@@ -1,5 +1,5 @@
-// The one GLSL scanner (shader/glsl_scan.h): the #version directive and
-// words, on ordinary and hostile text.
+// The GLSL scanning helpers (shader/glsl_scan.h): the #version directive,
+// lines and the const leniency, on ordinary and hostile text.
 #include "shader/glsl_scan.h"
 
 #include <gtest/gtest.h>
@@ -60,7 +60,6 @@ TEST(GlslScan, FindsTheFirstWholeWordWithAPrefix) {
 
 TEST(GlslScan, WordsAndLines) {
     const std::string text = "uniform vec3 uTint;\n\nvoid main() { x_1 = 2.5; }";
-    EXPECT_EQ(glslWords("  a.b_c 4d,"), (std::vector<std::string_view>{"a", "b_c", "4d"}));
     EXPECT_EQ(lineStartOf(text, 1), 0u);
     EXPECT_EQ(lineStartOf(text, 3), 21u);
     EXPECT_EQ(lineStartOf(text, 4), std::string::npos);
@@ -70,14 +69,39 @@ TEST(GlslScan, WordsAndLines) {
     EXPECT_EQ(lineOf(text, 9), "");
 }
 
-TEST(GlslScan, WholeWordsAndWordCharacters) {
-    EXPECT_TRUE(isWholeWordAt("uniform float uAdd;", 14, 4));
-    EXPECT_FALSE(isWholeWordAt("uniform float uAdder;", 14, 4));
-    EXPECT_FALSE(isWholeWordAt("abc", 2, 5));  // past the end
+TEST(GlslScan, WordCharacters) {
     EXPECT_TRUE(isGlslWordChar('_'));
     EXPECT_FALSE(isGlslWordChar('\xe9'));  // a byte of UTF-8 is never part of a GLSL identifier
     EXPECT_TRUE(isGlslWordStart('a'));
     EXPECT_FALSE(isGlslWordStart('7'));
+}
+
+// Read through the lexer: a directive after a block comment on its line
+// counts, one continued over lines is one directive, comments after the
+// profile are blanks.
+TEST(GlslScan, TheVersionDirectiveAsTheLexerReadsIt) {
+    GlslVersion v = glslVersionOf("/* a shader */ #version 330 /* the profile: */ core /* done */\n");
+    EXPECT_EQ(v.number, 330);
+    EXPECT_EQ(v.profile, "core");
+    EXPECT_EQ(v.line, 1);
+    EXPECT_TRUE(v.wellFormed);
+    v = glslVersionOf("// #version 450\n#version \\\n 150 compatibility\n");
+    EXPECT_EQ(v.number, 150);
+    EXPECT_EQ(v.profile, "compatibility");
+    EXPECT_EQ(v.line, 2);
+    EXPECT_FALSE(glslVersionOf("#version 150core\n").wellFormed);
+    EXPECT_FALSE(glslVersionOf("#version 1.5\n").wellFormed);
+}
+
+// NVIDIA's leniency: the last 'const' before the column on its line is
+// blanked, not one in a comment or a longer word.
+TEST(GlslScan, TheConstBeforeTheColumnIsBlanked) {
+    const std::string text = "uniform float uK;\nconst float constant = uK; /* const */ const float k2 = uK;\n";
+    EXPECT_EQ(withoutConstBefore(text, 2, 54),
+              "uniform float uK;\nconst float constant = uK; /* const */       float k2 = uK;\n");
+    EXPECT_EQ(withoutConstBefore(text, 2, 22), "uniform float uK;\n      float constant = uK; /* const */ const float k2 = uK;\n");
+    EXPECT_EQ(withoutConstBefore(text, 1, 10), text);  // none before it on its line
+    EXPECT_EQ(withoutConstBefore(text, 9, 1), text);   // no such line
 }
 
 }  // namespace
