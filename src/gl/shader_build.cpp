@@ -129,16 +129,13 @@ int profilelessVersionLine(const std::string& text, int& version) {
     return version >= 150 && v.profile.empty() ? v.line : 0;
 }
 
-// `text` with " compatibility" after the number of its `#version` on `line`.
+// `text` with " compatibility" after the number of its `#version` on `line`
+// (where the lexer read it: a comment before the directive or a continued
+// line moves nothing).
 std::string withCompatibilityProfile(const std::string& text, int line) {
-    const size_t at = lineStartOf(text, line);
-    if (at == std::string::npos) return text;
-    size_t end = text.find_first_of("\r\n", at);
-    std::string directive = text.substr(at, end == std::string::npos ? std::string::npos : end - at);
-    size_t number = directive.find_first_of("0123456789");
-    size_t after = directive.find_first_not_of("0123456789", number);
-    directive.insert(after == std::string::npos ? directive.size() : after, " compatibility");
-    return text.substr(0, at) + directive + (end == std::string::npos ? "" : text.substr(end));
+    const GlslVersion v = glslVersionOf(text);
+    if (v.line != line || v.numberEnd == std::string::npos) return text;
+    return text.substr(0, v.numberEnd) + " compatibility" + text.substr(v.numberEnd);
 }
 
 // The warning for a local const whose initialiser is not constant (Mesa's `message`).

@@ -37,7 +37,7 @@ GlslVersion glslVersionOf(std::string_view s) {
         const int number = k < w.size() && w[k].kind == GlslTokenKind::Number ? versionNumber(tokenText(d, w[k])) : -1;
         if (number >= 0) v.number = number;
         v.wellFormed = number >= 0 && isDigits(tokenText(d, w[k]));  // not "150core", "1.5"
-        if (number >= 0) ++k;
+        if (number >= 0) v.numberEnd = t.begin + w[k++].end;
         if (k < w.size() && w[k].kind == GlslTokenKind::Word) v.profile = std::string(tokenText(d, w[k++]));
         if (k < w.size()) v.wellFormed = false;  // anything after the profile
         return v;

@@ -30,12 +30,15 @@ inline bool isGlslWordStart(char c) { return isGlslWordChar(c) && !(c >= '0' && 
 // (0 when none). Only the first directive counts, as for the compiler; one in
 // a comment does not. `wellFormed` is false when the number is not all
 // digits or something other than blanks or comments follows the profile.
+// `numberEnd`: the offset in `source` just past the number (npos when none),
+// where a profile word may be put (gl/shader_build.cpp adds "compatibility").
 constexpr int kMaxGlslVersionNumber = 999999;
 struct GlslVersion {
     int number = 110;
     std::string profile;
     int line = 0;
     bool wellFormed = true;
+    size_t numberEnd = std::string_view::npos;
 };
 GlslVersion glslVersionOf(std::string_view source);
 

@@ -89,6 +89,8 @@ TEST(GlslScan, TheVersionDirectiveAsTheLexerReadsIt) {
     EXPECT_EQ(v.number, 150);
     EXPECT_EQ(v.profile, "compatibility");
     EXPECT_EQ(v.line, 2);
+    EXPECT_EQ(v.numberEnd, 31u);  // just past "150", where a profile goes
+    EXPECT_EQ(glslVersionOf("void main() {}\n").numberEnd, std::string::npos);
     EXPECT_FALSE(glslVersionOf("#version 150core\n").wellFormed);
     EXPECT_FALSE(glslVersionOf("#version 1.5\n").wellFormed);
 }
