@@ -80,19 +80,18 @@ TEST(GlslScan, WordCharacters) {
 // counts, one continued over lines is one directive, comments after the
 // profile are blanks.
 TEST(GlslScan, TheVersionDirectiveAsTheLexerReadsIt) {
-    GlslVersion v = glslVersionOf("/* a shader */ #version 330 /* the profile: */ core /* done */\n");
-    EXPECT_EQ(v.number, 330);
-    EXPECT_EQ(v.profile, "core");
-    EXPECT_EQ(v.line, 1);
-    EXPECT_TRUE(v.wellFormed);
-    v = glslVersionOf("// #version 450\n#version \\\n 150 compatibility\n");
-    EXPECT_EQ(v.number, 150);
-    EXPECT_EQ(v.profile, "compatibility");
-    EXPECT_EQ(v.line, 2);
-    EXPECT_EQ(v.numberEnd, 31u);  // just past "150", where a profile goes
+    // Number, profile, line and well-formedness in one line, for one EXPECT each.
+    auto read = [](std::string_view text) {
+        const GlslVersion v = glslVersionOf(text);
+        return std::to_string(v.number) + " '" + v.profile + "' line " + std::to_string(v.line) +
+               (v.wellFormed ? "" : " ill-formed");
+    };
+    EXPECT_EQ(read("/* a shader */ #version 330 /* the profile: */ core /* done */\n"), "330 'core' line 1");
+    EXPECT_EQ(read("// #version 450\n#version \\\n 150 compatibility\n"), "150 'compatibility' line 2");
+    EXPECT_EQ(glslVersionOf("// #version 450\n#version \\\n 150 compatibility\n").numberEnd, 31u);  // just past "150"
     EXPECT_EQ(glslVersionOf("void main() {}\n").numberEnd, std::string::npos);
-    EXPECT_FALSE(glslVersionOf("#version 150core\n").wellFormed);
-    EXPECT_FALSE(glslVersionOf("#version 1.5\n").wellFormed);
+    EXPECT_EQ(read("#version 150core\n"), "150 '' line 1 ill-formed");
+    EXPECT_EQ(read("#version 1.5\n"), "1 '' line 1 ill-formed");
 }
 
 // NVIDIA's leniency: the last 'const' before the column on its line is
