@@ -1,9 +1,12 @@
 #include "shader/glslang_log.h"
-#include "shader/glsl_scan.h"
 
 #include <cctype>
 #include <climits>
 #include <utility>
+#include <vector>
+
+#include "shader/glsl_lexer.h"
+#include "shader/glsl_scan.h"
 
 namespace glimmer {
 namespace {
@@ -71,14 +74,29 @@ std::string_view unexpectedToken(std::string_view msg) {
 
 }  // namespace
 
+// The line's code tokens, a directive's own words among them (an error in
+// `#extension foo : require` names foo), in order, offsets into the line.
+// The line is lexed alone: a log names a line, and lexing the whole shader
+// for each of its messages would cost the shader's size each time.
 int columnOf(std::string_view text, int line, std::string_view token) {
-    std::string_view l = lineOf(text, line);
+    const std::string_view l = lineOf(text, line);
     if (token.empty()) return 0;
-    const bool word = isGlslWordChar(token.front()) && isGlslWordChar(token.back());
-    for (size_t at = l.find(token); at != std::string_view::npos; at = l.find(token, at + 1)) {
-        bool alone = !word || ((at == 0 || !isGlslWordChar(l[at - 1])) &&
-                               (at + token.size() >= l.size() || !isGlslWordChar(l[at + token.size()])));
-        if (alone) return int(at) + 1;
+    std::vector<GlslToken> code;
+    for (const GlslToken& t : lexGlsl(l)) {
+        if (isGlslCode(t.kind)) code.push_back(t);
+        if (t.kind != GlslTokenKind::Directive) continue;
+        for (GlslToken w : directiveTokens(tokenText(l, t))) {
+            w.begin += t.begin;
+            w.end += t.begin;
+            code.push_back(w);
+        }
+    }
+    // The first run of whole tokens spelled `token` ("<=" holds no '=', "uKd" is not in "uKdColor").
+    for (size_t k = 0; k < code.size(); ++k) {
+        const size_t at = code[k].begin, end = at + token.size();
+        if (l.compare(at, token.size(), token) != 0) continue;
+        for (size_t j = k; j < code.size() && code[j].end <= end; ++j)
+            if (code[j].end == end) return int(at) + 1;
     }
     return 0;
 }

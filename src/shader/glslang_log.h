@@ -25,8 +25,9 @@ struct GlslangLogContext {
 // Adds one diagnostic per message line; returns how many errors it added.
 int mapGlslangLog(std::string_view log, const GlslangLogContext& context, Diagnostics& diags);
 
-// The 1-based column of `token` on line `line` of `text` (as a whole word
-// when it is one); 0 when it is not there.
+// The 1-based column of `token` on line `line` of `text`, as whole tokens
+// of the lexer (never inside a longer word or operator, never in a
+// comment); 0 when it is not there.
 int columnOf(std::string_view text, int line, std::string_view token);
 
 }  // namespace glimmer
