@@ -167,6 +167,13 @@ std::vector<size_t> matchingBrackets(std::string_view text, const std::vector<Gl
     return mate;
 }
 
+GlslEdit blankingEdit(std::string_view text, size_t begin, size_t end) {
+    GlslEdit e{begin, end - begin, std::string(text.substr(begin, end - begin))};
+    for (char& c : e.insert)
+        if (c != '\n') c = ' ';
+    return e;
+}
+
 std::string applyGlslEdits(std::string_view text, std::vector<GlslEdit> edits) {
     std::stable_sort(edits.begin(), edits.end(), [](const GlslEdit& a, const GlslEdit& b) { return a.at < b.at; });
     std::string out;

@@ -89,6 +89,10 @@ struct GlslEdit {
     size_t erase = 0;
     std::string insert;
 };
+// The edit that turns bytes [begin, end) of `text` into spaces, its
+// newlines kept, so every line and column after it stays where it was
+// (what a rewrite takes out of a shader whose lines a log will name).
+GlslEdit blankingEdit(std::string_view text, size_t begin, size_t end);
 // `text` with `edits` made; they may come in any order, two at one offset
 // keep theirs, and one that overlaps an earlier one is left out (a rewrite
 // never makes such, so it is a guard, not a rule).

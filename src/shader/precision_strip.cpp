@@ -17,13 +17,10 @@ PrecisionStripResult stripPrecisionQualifiers(std::string_view source) {
     }
     const std::vector<GlslToken> t = glslCodeTokens(source);
     std::vector<GlslEdit> blanks;
-    // Tokens [from, to) become spaces; their newlines stay, so lines and columns do.
+    // Tokens [from, to) become spaces (their newlines stay).
     auto blank = [&](size_t from, size_t to) {
         const size_t begin = t[from].begin, end = to < t.size() ? t[to - 1].end : source.size();
-        GlslEdit e{begin, end - begin, std::string(source.substr(begin, end - begin))};
-        for (char& c : e.insert)
-            if (c != '\n') c = ' ';
-        blanks.push_back(std::move(e));
+        blanks.push_back(blankingEdit(source, begin, end));
         if (!r.firstLine) r.firstLine = t[from].line;
     };
     for (size_t k = 0; k < t.size(); ++k) {

@@ -121,10 +121,7 @@ UniformInitializers takeUniformInitializers(std::string_view source) {
                 if (bracket == d && readValue(type, Value{source, t, eq + 1, d}, u.values)) out.values.push_back(std::move(u));
                 else out.unreadable.push_back(std::move(u));
                 // Blanked from '=' to the ',' or ';', comments and all; newlines kept.
-                GlslEdit e{t[eq].begin, t[d].begin - t[eq].begin, std::string(source.substr(t[eq].begin, t[d].begin - t[eq].begin))};
-                for (char& c : e.insert)
-                    if (c != '\n') c = ' ';
-                blanks.push_back(std::move(e));
+                blanks.push_back(blankingEdit(source, t[eq].begin, t[d].begin));
             }
             from = d + 1;
         }
