@@ -72,52 +72,54 @@ size_t punctLength(std::string_view s, size_t at) {
 
 }  // namespace
 
+bool GlslLexer::next(GlslToken& out) {
+    const std::string_view s = s_;
+    const size_t i = i_;
+    if (i >= s.size()) return false;
+    const char c = s[i];
+    GlslToken t{GlslTokenKind::Other, i, i + 1, line_, int(i - lineBegin_) + 1};
+    if (c == '\n' || (c == '\r' && i + 1 < s.size() && s[i + 1] == '\n')) {
+        t.kind = GlslTokenKind::Newline;
+        t.end = c == '\n' ? i + 1 : i + 2;
+    } else if (isBlank(c)) {
+        t.kind = GlslTokenKind::Space;
+        while (t.end < s.size() && isBlank(s[t.end]) && !(s[t.end] == '\r' && t.end + 1 < s.size() && s[t.end + 1] == '\n'))
+            ++t.end;
+    } else if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
+        t.kind = GlslTokenKind::LineComment;
+        t.end = std::min(s.find('\n', i), s.size());
+        if (t.end > i + 2 && s[t.end - 1] == '\r' && t.end < s.size()) --t.end;  // "\r\n" is the Newline's
+    } else if (c == '/' && i + 1 < s.size() && s[i + 1] == '*') {
+        t.kind = GlslTokenKind::BlockComment;
+        t.end = blockCommentEnd(s, i);
+    } else if (c == '#' && atLineStart_) {
+        t.kind = GlslTokenKind::Directive;
+        t.end = directiveEnd(s, i);
+    } else if (isGlslWordStart(c)) {
+        t.kind = GlslTokenKind::Word;
+        while (t.end < s.size() && isGlslWordChar(s[t.end])) ++t.end;
+    } else if (isDigit(c) || (c == '.' && i + 1 < s.size() && isDigit(s[i + 1]))) {
+        t.kind = GlslTokenKind::Number;
+        t.end = numberEnd(s, i);
+    } else if (size_t length = punctLength(s, i); length > 0) {
+        t.kind = GlslTokenKind::Punct;
+        t.end = i + length;
+    }
+    if (t.kind == GlslTokenKind::Newline) atLineStart_ = true;
+    else if (t.kind != GlslTokenKind::Space && t.kind != GlslTokenKind::BlockComment) atLineStart_ = false;
+    // Only newlines, block comments and directives hold a '\n'.
+    if (t.kind == GlslTokenKind::Newline || t.kind == GlslTokenKind::BlockComment || t.kind == GlslTokenKind::Directive)
+        for (size_t k = i; k < t.end; ++k)
+            if (s[k] == '\n') ++line_, lineBegin_ = k + 1;
+    i_ = t.end;
+    out = t;
+    return true;
+}
+
 std::vector<GlslToken> lexGlsl(std::string_view s) {
     std::vector<GlslToken> out;
-    size_t i = 0;
-    int line = 1;
-    size_t lineBegin = 0;     // offset of the current line's first byte
-    bool atLineStart = true;  // only blanks and block comments since the last newline
-    while (i < s.size()) {
-        const char c = s[i];
-        const GlslToken start{GlslTokenKind::Other, i, i + 1, line, int(i - lineBegin) + 1};
-        GlslToken t = start;
-        if (c == '\n' || (c == '\r' && i + 1 < s.size() && s[i + 1] == '\n')) {
-            t.kind = GlslTokenKind::Newline;
-            t.end = c == '\n' ? i + 1 : i + 2;
-        } else if (isBlank(c)) {
-            t.kind = GlslTokenKind::Space;
-            while (t.end < s.size() && isBlank(s[t.end]) && !(s[t.end] == '\r' && t.end + 1 < s.size() && s[t.end + 1] == '\n'))
-                ++t.end;
-        } else if (c == '/' && i + 1 < s.size() && s[i + 1] == '/') {
-            t.kind = GlslTokenKind::LineComment;
-            t.end = std::min(s.find('\n', i), s.size());
-            if (t.end > i + 2 && s[t.end - 1] == '\r' && t.end < s.size()) --t.end;  // "\r\n" is the Newline's
-        } else if (c == '/' && i + 1 < s.size() && s[i + 1] == '*') {
-            t.kind = GlslTokenKind::BlockComment;
-            t.end = blockCommentEnd(s, i);
-        } else if (c == '#' && atLineStart) {
-            t.kind = GlslTokenKind::Directive;
-            t.end = directiveEnd(s, i);
-        } else if (isGlslWordStart(c)) {
-            t.kind = GlslTokenKind::Word;
-            while (t.end < s.size() && isGlslWordChar(s[t.end])) ++t.end;
-        } else if (isDigit(c) || (c == '.' && i + 1 < s.size() && isDigit(s[i + 1]))) {
-            t.kind = GlslTokenKind::Number;
-            t.end = numberEnd(s, i);
-        } else if (size_t length = punctLength(s, i); length > 0) {
-            t.kind = GlslTokenKind::Punct;
-            t.end = i + length;
-        }
-        if (t.kind == GlslTokenKind::Newline) atLineStart = true;
-        else if (t.kind != GlslTokenKind::Space && t.kind != GlslTokenKind::BlockComment) atLineStart = false;
-        // Only newlines, block comments and directives hold a '\n'.
-        if (t.kind == GlslTokenKind::Newline || t.kind == GlslTokenKind::BlockComment || t.kind == GlslTokenKind::Directive)
-            for (size_t k = i; k < t.end; ++k)
-                if (s[k] == '\n') ++line, lineBegin = k + 1;
-        out.push_back(t);
-        i = t.end;
-    }
+    GlslLexer lexer(s);
+    for (GlslToken t{}; lexer.next(t);) out.push_back(t);
     return out;
 }
 

@@ -55,6 +55,23 @@ struct GlslToken {
 
 std::vector<GlslToken> lexGlsl(std::string_view text);
 
+// The same tokens one at a time, for a reader that stops early (the
+// #version directive near the top of a 2 MB shader): lexGlsl is this run to
+// the end. `text` must outlive it.
+class GlslLexer {
+public:
+    explicit GlslLexer(std::string_view text) : s_(text) {}
+    // The next token into `t`; false (and `t` unchanged) at the text's end.
+    bool next(GlslToken& t);
+
+private:
+    std::string_view s_;
+    size_t i_ = 0;
+    int line_ = 1;
+    size_t lineBegin_ = 0;     // offset of the current line's first byte
+    bool atLineStart_ = true;  // only blanks and block comments since the last newline
+};
+
 // The tokens a compiler's grammar reads: Word, Number, Punct and Other; no
 // blanks, comments or directives (a rewrite that reads a directive lexes
 // the whole text). Offsets, lines and columns are those of `text`.

@@ -25,9 +25,11 @@ int versionNumber(std::string_view number) {
 
 // The first Directive token of the lexer whose first word is `version`: a
 // directive in a comment is inside the comment's token, so it never counts.
+// Lexed only up to it: it is near the top, and callers ask on every build.
 GlslVersion glslVersionOf(std::string_view s) {
     GlslVersion v;
-    for (const GlslToken& t : lexGlsl(s)) {
+    GlslLexer lexer(s);
+    for (GlslToken t{}; lexer.next(t);) {
         if (t.kind != GlslTokenKind::Directive) continue;
         const std::string_view d = tokenText(s, t);
         const std::vector<GlslToken> w = directiveTokens(d);  // version NUMBER [PROFILE], comments left out
