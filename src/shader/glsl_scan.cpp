@@ -81,10 +81,11 @@ std::string globalConstDropped(const std::string& quoted) {
 }
 
 // The last code token `const` on the line before the column: one in a
-// comment or a directive is not the declaration's.
+// comment or a directive is not the declaration's. Lexed only up to there.
 std::string withoutConstBefore(std::string text, int line, int col) {
     size_t at = std::string::npos;
-    for (const GlslToken& t : glslCodeTokens(text)) {
+    GlslLexer lexer(text);
+    for (GlslToken t{}; lexer.next(t);) {
         if (t.line > line || (t.line == line && t.col >= col)) break;
         if (t.line == line && t.kind == GlslTokenKind::Word && tokenText(text, t) == "const") at = t.begin;
     }

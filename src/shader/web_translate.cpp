@@ -70,7 +70,8 @@ bool compileToSpirv(const CompatRewrite& rewritten, EShLanguage language, const 
 // column is no name; a word the column cuts is taken up to the column.
 std::string nameBefore(std::string_view text, int line, int col) {
     std::string_view name;
-    for (const GlslToken& t : lexGlsl(text)) {
+    GlslLexer lexer(text);  // only up to the column
+    for (GlslToken t{}; lexer.next(t);) {
         if (t.line > line || (t.line == line && t.col >= col)) break;
         if (t.line < line || t.kind == GlslTokenKind::Space) continue;
         name = t.kind == GlslTokenKind::Word ? tokenText(text, t).substr(0, size_t(col - t.col)) : std::string_view();
