@@ -266,9 +266,8 @@ bool ViewerCore::apply(const ViewCommand& c, std::string& said) {
     said.clear();
     switch (c.kind) {
     case ViewCommand::Kind::Set: {
-        if (!s_.good) return true;
         Diagnostics d;
-        s_.values->applySet(s_.good->plan, c.name + "=" + c.text, d);
+        set(c.name + "=" + c.text, d);
         for (const auto& diag : d.all()) said += std::string(severityName(diag.severity)) + ": " + diag.message + "\n";
         if (!said.empty()) said.pop_back();
         return true;

@@ -222,7 +222,6 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     g.budgetMs = io.MouseDown[0] || io.MouseWheel != 0 ? gSliceMs : gSliceMs * kIdleSliceFactor;
     v.asks = 0;
     v.core.frame(g, v);
-    for (int p : v.core.takeDrawnPasses()) v.drawn.insert(p);
     if (v.pinnedPanelW == 0 && v.s.good && !v.s.failed && ++v.calmFrames >= 3) v.pinnedPanelW = v.core.panelWidth();
     return v.asks;
 }
@@ -230,8 +229,6 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
 EMSCRIPTEN_KEEPALIVE int glimmer_view_width() { return viewer ? viewer->layout().windowW : 0; }
 EMSCRIPTEN_KEEPALIVE int glimmer_view_height() { return viewer ? viewer->layout().windowH : 0; }
 
-// The watch now, for tests: its spec, its summary and why the last one
-// asked for was refused, tab-separated (each empty when there is none).
 // One of `glimmer view`'s commands (view/view_commands.h: set, show,
 // values, probe [X Y], split, save, reload, frames), applied by the same
 // core as the window's. Returns what the window prints for it, a line each
@@ -267,20 +264,5 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_command(const char* line) {
 EMSCRIPTEN_KEEPALIVE void glimmer_view_slice_ms(double ms) {
     gSliceMs = ms > 0 ? ms : std::numeric_limits<double>::infinity();
 }
-
-// The probe's text now ("" when off or not over the picture): what the
-// tooltip by the pointer says.
-// The page's Save sheet, as `glimmer sheet SCRIPT --vary ...` draws it: the
-// cells at the picture's size, the other uniforms at the panel's values
-// (named in the title where they differ from the script's). `vary` is one
-// or two NAME=V1,V2,... separated by ';'. 0: the sheet is in
-// glimmer_pixels; 2: a bad --vary (the message in glimmer_last_output).
-// A sheet to suggest: the first slider from its minimum to its maximum in
-// three steps ("uAdd=0,2,4"; an int's middle rounded); "" when the script
-// has none.
-// Every control's value now, as the page's sets: "NAME=V;NAME=V1,V2,..."
-// (ranges, checkboxes, colours, vectors; the first Program's value of a
-// name). The page keeps it across a reload and gives each back through
-// glimmer_view_set (a value a changed script no longer takes is dropped).
 
 }  // extern "C"

@@ -52,6 +52,8 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_value(const char* name) {
     return text.c_str();
 }
 
+// The watch now, for tests: its spec, its summary and why the last one
+// asked for was refused, tab-separated (each empty when there is none).
 EMSCRIPTEN_KEEPALIVE const char* glimmer_view_watch() {
     static std::string text;
     text.clear();
@@ -72,10 +74,8 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_control(const char* name) {
 EMSCRIPTEN_KEEPALIVE const char* glimmer_view_drawn() {
     static std::string text;
     text.clear();
-    if (liveViewer()) {
-        for (int p : liveViewer()->drawn) text += (text.empty() ? "" : " ") + std::to_string(p);
-        liveViewer()->drawn.clear();
-    }
+    if (liveViewer())  // the core keeps them until asked
+        for (int p : liveViewer()->core.takeDrawnPasses()) text += (text.empty() ? "" : " ") + std::to_string(p);
     return text.c_str();
 }
 
@@ -85,8 +85,15 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_snapshot() {
     return glimmer_web::pagePicture().empty() ? 0 : 1;
 }
 
+// The probe's text now ("" when off or not over the picture): what the
+// tooltip by the pointer says.
 EMSCRIPTEN_KEEPALIVE const char* glimmer_view_probe() { return liveViewer() ? liveViewer()->s.probeText.c_str() : ""; }
 
+// The page's Save sheet, as `glimmer sheet SCRIPT --vary ...` draws it: the
+// cells at the picture's size, the other uniforms at the panel's values
+// (named in the title where they differ from the script's). `vary` is one
+// or two NAME=V1,V2,... separated by ';'. 0: the sheet is in
+// glimmer_pixels; 2: a bad --vary (the message in glimmer_last_output).
 EMSCRIPTEN_KEEPALIVE int glimmer_view_sheet(const char* vary) {
     if (!liveViewer() || !liveViewer()->s.good || !liveViewer()->s.renderer) return 2;
     const ViewerState& s = liveViewer()->s;
@@ -107,6 +114,9 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_sheet(const char* vary) {
     return 0;
 }
 
+// A sheet to suggest: the first slider from its minimum to its maximum in
+// three steps ("uAdd=0,2,4"; an int's middle rounded); "" when the script
+// has none.
 EMSCRIPTEN_KEEPALIVE const char* glimmer_view_sheet_suggestion() {
     static std::string text;
     text.clear();
@@ -132,6 +142,10 @@ EMSCRIPTEN_KEEPALIVE const char* glimmer_view_files() {
     return text.c_str();
 }
 
+// Every control's value now, as the page's sets: "NAME=V;NAME=V1,V2,..."
+// (ranges, checkboxes, colours, vectors; the first Program's value of a
+// name). The page keeps it across a reload and gives each back through
+// glimmer_view_set (a value a changed script no longer takes is dropped).
 EMSCRIPTEN_KEEPALIVE const char* glimmer_view_sets() {
     static std::string text;
     text.clear();

@@ -42,7 +42,6 @@ struct WebViewer : ViewerHost {
     ViewerCore core;
     const ViewerState& s = core.state();
     int width = 512, height = 512;  // the picture, as asked
-    std::set<int> drawn;     // the passes drawn since the page last asked (glimmer_view_drawn)
     std::string messages;    // the last load's diagnostics, a line each (glimmer_view_messages)
     int asks = 0;            // glimmer_view_frame's answer: 1 reload, 2 save, 4 a hardcopy saved
     std::string* answer = nullptr;  // a command's answer being collected (glimmer_view_command)
