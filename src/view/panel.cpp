@@ -16,6 +16,7 @@ namespace glimmer {
 namespace {
 
 ImFont* gMono = nullptr;  // DejaVu Sans Mono: messages with a caret under a column
+float gFontsScale = 0;    // the scale the ImGui context's fonts were last made at (0: not yet)
 
 bool isIntType(const Renderer& r, int program, const std::string& name) {
     return r.uniformKind(program, name) == Renderer::UniformKind::Int;
@@ -254,7 +255,10 @@ void setUpFonts(float scale) {
     }
     gMono = !mono.empty() ? io.Fonts->AddFontFromFileTTF(mono.c_str(), std::round(14.f * scale), &cfg) : nullptr;
     ImGui::GetStyle().ScaleAllSizes(scale);
+    gFontsScale = scale;
 }
+
+float fontsScale() { return gFontsScale; }
 
 std::string overlayText(const ViewerState& s) {
     if (!s.good || !s.values) return {};

@@ -34,5 +34,9 @@ constexpr float kPanelFontPx = 15;
 // (error messages, whose carets must line up). Falls back to ImGui's own
 // font scaled, with a warning on stderr, when no TTF file is found.
 void setUpFonts(float scale);
+// The scale the fonts were last made at (0 before the first setUpFonts):
+// the ImGui context's, which outlives a viewer core (the page opens
+// another script in the same context).
+float fontsScale();
 
 }  // namespace glimmer

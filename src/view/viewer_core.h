@@ -263,7 +263,6 @@ private:
     std::vector<ViewCommand> keyAsks_;           // reload, save, quit from keys: at the frame's end
     PictureDrag drag_;
     int panelW_ = 0, panelH_ = 0;
-    float fontsScale_ = 0;  // the scale the fonts were last made at (0: not yet)
     std::vector<std::string> scriptFiles_, readFiles_;
     std::chrono::steady_clock::time_point lastHealth_{};
     std::uint64_t healthVersion_ = 0;

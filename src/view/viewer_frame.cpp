@@ -25,7 +25,7 @@ bool ViewerCore::startFrames(std::string& why) {
 }
 
 void ViewerCore::followUiScale(ViewerHost& host) {
-    if (fontsScale_ == uiScale_) return;
+    if (fontsScale() == uiScale_) return;  // made at this scale already, by this core or the last
     setUpFonts(uiScale_);
     // The backend made its font texture at the first frame: made again at the
     // new size (before it, the first NewFrame makes it from these fonts).
@@ -33,7 +33,6 @@ void ViewerCore::followUiScale(ViewerHost& host) {
         ImGui_ImplOpenGL3_DestroyFontsTexture();
         ImGui_ImplOpenGL3_CreateFontsTexture();
     }
-    fontsScale_ = uiScale_;
     host.say(fmt::format("ui scale {:g}", uiScale_));
 }
 
