@@ -55,7 +55,7 @@ export async function openPage(url, seconds = 120) {
 
   // Chromium writes its port into the profile once it listens.
   let port;
-  for (let i = 0; i < 200 && !port; ++i) {
+  for (let i = 0; i < 600 && !port; ++i) {  // up to 30 s: a loaded machine starts it slowly
     try { port = readFileSync(join(profile, "DevToolsActivePort"), "utf8").split("\n")[0]; } catch { await sleep(50); }
   }
   if (!port) { console.error("Chromium did not start"); close(1); }

@@ -60,7 +60,9 @@ if (saveDir && result.exit === 0) {
   await page.evaluate(`document.getElementById("save").click()`);
   // Chromium writes NAME.crdownload, then renames it when done.
   const done = () => existsSync(saveDir) && readdirSync(saveDir).some((f) => f.endsWith(".png"));
-  for (let i = 0; i < 100 && !done(); ++i) await sleep(100);
+  // Up to 30 s: the snapshot, its PNG and the download on a machine busy
+  // with other tests (10 s was once too short in CI's -j2 run).
+  for (let i = 0; i < 300 && !done(); ++i) await sleep(100);
   if (!done()) { console.error("Save PNG downloaded nothing"); page.close(1); }
   console.log("saved: " + readdirSync(saveDir).filter((f) => f.endsWith(".png")).join(" "));
 }

@@ -43,9 +43,9 @@ cp tests/data/glman/pass.vert tests/data/glman/lit.frag "$pictures/picked/"
 echo "  a picked glman folder against render"
 mkdir "$pictures/downloads"
 NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs "file://$page" "$pictures/picked" "$pictures/picked.png" \
-     "$pictures/downloads" >/dev/null 2>&1 \
+     "$pictures/downloads" >/dev/null 2>"$pictures/picked.err" \
    && same_picture "$pictures/picked.png" "$pictures/picked_desktop.png"
-tally $? "the picked folder did not draw render's picture"
+tally $? "the picked folder did not draw render's picture ($(tail -c 300 "$pictures/picked.err"))"
 # The same folder dropped on the page (dragged from a file manager).
 echo "  a dropped glman folder against render"
 NODE_PATH=/usr/share/nodejs node tools/page-pick-folder.mjs --drop "file://$page" "$pictures/picked" \
