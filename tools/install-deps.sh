@@ -21,6 +21,7 @@ packages=(
   libglfw3-dev libimgui-dev           # glimmer view: the window and its panel
   glslang-dev glslang-tools           # the translation for WebGL 2: desktop GLSL -> SPIR-V (src/shader/web_translate.h)
   libspirv-cross-c-shared-dev spirv-cross  # and SPIR-V -> GLSL ES 3.00 (its C++ libraries come with the -dev package)
+  libcpp-httplib-dev libsqlite3-dev libqrencode-dev  # glimmer serve: HTTP, the class's store, the join QR code (src/serve)
 )
 test_packages=(
   libgtest-dev xvfb xauth             # tests, the viewer's under a virtual X server

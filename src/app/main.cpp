@@ -33,6 +33,7 @@ int run(int argc, char** argv) {
     TradeoffOptions tradeoff;
     BatchOptions batch;
     BatchMergeOptions batchMerge;
+    ServeOptions serve;
     addRenderCommand(app, render);
     addCheckCommand(app, check);
     addViewCommand(app, view);
@@ -40,6 +41,7 @@ int run(int argc, char** argv) {
     addTradeoffCommand(app, tradeoff);
     addBatchCommand(app, batch);
     addBatchMergeCommand(app, batchMerge);
+    addServeCommand(app, serve);
     // `glimmer script.glib` is `glimmer view script.glib`, as glslViewer.
     std::vector<char*> args(argv, argv + argc);
     std::string viewWord = "view";
@@ -51,9 +53,10 @@ int run(int argc, char** argv) {
     // CLI11 reports a mistyped command as "A subcommand is required"; name it.
     std::string first = args.size() > 1 ? args[1] : "";
     if (!first.empty() && first[0] != '-' && first != "render" && first != "check" && first != "view" &&
-        first != "sheet" && first != "tradeoff" && first != "batch" && first != "batch-merge") {
+        first != "sheet" && first != "tradeoff" && first != "batch" && first != "batch-merge" &&
+        first != "serve") {
         std::cerr << "glimmer: error: unknown command '" << first
-                  << "'; the commands are 'render', 'check', 'view', 'sheet', 'tradeoff', 'batch' and 'batch-merge'\n"
+                  << "'; the commands are 'render', 'check', 'view', 'sheet', 'tradeoff', 'batch', 'batch-merge' and 'serve'\n"
                   << "Run with --help for more information.\n";
         return kExitUsage;
     }
@@ -77,6 +80,7 @@ int run(int argc, char** argv) {
     if (app.got_subcommand("tradeoff")) return runTradeoff(tradeoff);
     if (app.got_subcommand("batch")) return runBatch(batch);
     if (app.got_subcommand("batch-merge")) return runBatchMerge(batchMerge);
+    if (app.got_subcommand("serve")) return runServe(serve);
     return kExitUsage;
 }
 

@@ -38,6 +38,16 @@ void addBatchMergeCommand(CLI::App& app, BatchMergeOptions& options);
 int runBatchMerge(const BatchMergeOptions& options);
 int runCheck(const CheckOptions& options);
 
+// glimmer serve (app/serve_command.cpp; the work in src/serve).
+struct ServeOptions {
+    std::string lessonDir, solution, roster, host = "0.0.0.0", publicAddress, pageDir, overrides;
+    std::string stateDir = "glimmer-serve-state";
+    int port = 8080;
+    int jobs = 2;
+};
+void addServeCommand(CLI::App& app, ServeOptions& options);
+int runServe(const ServeOptions& options);
+
 // --sandbox and --max-memory (app/safety_options.cpp).
 void addSafetyOptions(CLI::App* sub, CommonOptions& options);
 

@@ -335,7 +335,9 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
   const editor = createGlimmerEditor({
     element: document.getElementById("editor"), tabs: document.getElementById("tabs"),
     note: document.getElementById("edit-note"),
-    readFile: (path) => FS.readFile(path, { encoding: "utf8" }), writeFile: (path, text) => FS.writeFile(path, text),
+    readFile: (path) => FS.readFile(path, { encoding: "utf8" }),
+    // Served by `glimmer serve`, each edit also goes to the server (glimmer-serve.js).
+    writeFile: (path, text) => { FS.writeFile(path, text); if (globalThis.glimmerServe) globalThis.glimmerServe.edited(path, text); },
     onShow: (path) => { if (restoring && live) { state.shown = path; keepState(); } },
     onEdit: () => live ? runView(live.root + ":" + live.path, live.width, live.height, "") : runView(select.value, 512, 512, ""),
   });
