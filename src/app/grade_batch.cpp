@@ -363,6 +363,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
 
     // What an earlier run of this folder already graded.
     std::vector<GradeRow> rows;
+    std::set<std::string> feedbackKept;  // of those, the students whose feedback page stays
     const fs::path records = out / "grades.jsonl";
     if (resume && fs::exists(records)) {
         std::string text, why;
@@ -376,6 +377,8 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         }
         std::set<std::string> wanted(mine.begin(), mine.end());
         std::erase_if(rows, [&](const GradeRow& r) { return !wanted.count(r.student) || only.count(r.student); });
+        for (const GradeRow& r : rows)
+            if (feedbackStillRight(out, r, overrides)) feedbackKept.insert(r.student);
     }
     std::set<std::string> graded;
     for (const auto& r : rows) graded.insert(r.student);
@@ -431,7 +434,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
         recordOut << gradeRecord(r) << "\n";
         recordOut.flush();
         if (std::chrono::steady_clock::now() - lastWrite > std::chrono::seconds(2)) {
-            writeReport(out, header, rows, rowHtml, out, overrides);
+            writeReport(out, header, rows, rowHtml, out, overrides, feedbackKept);
             lastWrite = std::chrono::steady_clock::now();
         }
     };
@@ -501,7 +504,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
                  keep(r);
              });
     progress.finish();
-    writeReport(out, header, rows, rowHtml, out, overrides);
+    writeReport(out, header, rows, rowHtml, out, overrides, feedbackKept);
     warnUnusedOverrides(rows, overrides);
     std::map<std::string, int> counts;
     for (const auto& r : rows) ++counts[r.verdict];

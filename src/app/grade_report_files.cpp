@@ -78,9 +78,22 @@ bool writeWhole(const fs::path& path, const std::string& text) {
     return writeBytesReplacing(path.string(), text.data(), text.size(), error);
 }
 
+bool feedbackStillRight(const fs::path& dir, const GradeRow& row, const std::map<std::string, Override>& overrides) {
+    if (overrides.count(row.student)) return false;
+    std::ifstream page(dir / "feedback" / (row.student + ".html"), std::ios::binary);
+    if (!page) return false;
+    // The override's lines come right after the heading (grade_report.cpp's feedbackHtml): the
+    // page's first 16 KiB hold them when they are there.
+    std::string head(16 * 1024, '\0');
+    page.read(head.data(), std::streamsize(head.size()));
+    head.resize(std::size_t(page.gcount()));
+    return head.find("(set by your teacher; computed") == std::string::npos &&
+           head.find("<p class=comment>Your teacher: ") == std::string::npos;
+}
+
 void writeReport(const fs::path& dir, const ReportHeader& header, std::vector<GradeRow> rows,
                  std::map<std::string, std::string>& rowHtml, const fs::path& picturesDir,
-                 const std::map<std::string, Override>& overrides) {
+                 const std::map<std::string, Override>& overrides, const std::set<std::string>& feedbackKept) {
     applyOverrides(rows, overrides);
     sortForReview(rows);
     std::vector<std::string> html;
@@ -88,7 +101,7 @@ void writeReport(const fs::path& dir, const ReportHeader& header, std::vector<Gr
         auto it = rowHtml.find(r.student);
         if (it == rowHtml.end()) {  // a row's pictures and its feedback page are made once
             it = rowHtml.emplace(r.student, reportRowHtml(r, rowPictures(r, picturesDir))).first;
-            writeFeedback(dir, header, r, picturesDir);
+            if (!feedbackKept.count(r.student)) writeFeedback(dir, header, r, picturesDir);
         }
         html.push_back(it->second);
     }

@@ -475,6 +475,11 @@ TEST(CliGrade, FeedbackPagesOverridesAndRegradingOneStudent) {
     student(cls / "painted2", frag);
     fs::remove_all(cls / "painted");
     fs::rename(cls / "painted2", cls / "painted");
+    // A student not regraded keeps their feedback page as it was: it is not made again (every
+    // setting's pictures encoded full size; glimmer serve regrades one student at a time, issue 41).
+    const fs::path rightPage = out / "feedback" / "right.html";
+    const auto longAgo = fs::file_time_type::clock::now() - std::chrono::hours(24);
+    fs::last_write_time(rightPage, longAgo);
     auto again = gradeArgs(cls, out);
     again.insert(again.end(), {"--only", "painted"});
     auto r2 = runGlimmer(again, 120);
@@ -482,6 +487,17 @@ TEST(CliGrade, FeedbackPagesOverridesAndRegradingOneStudent) {
     EXPECT_EQ(countOf(r2.err, "batch: 1/1 graded"), 1) << r2.err;
     EXPECT_EQ(csvRows(out / "grades.csv")["painted"], "100,pass,1.0000,inf|,");
     EXPECT_NE(readAll(out / "grades.jsonl").find(rightRecord), std::string::npos);  // untouched
+    EXPECT_EQ(fs::last_write_time(rightPage), longAgo);
+    // Unless the teacher's override for them came, or went, since.
+    std::ofstream(dir.path() / "note.csv") << "student,score,comment\nright,90,well done\n";
+    auto noted = again;
+    noted.insert(noted.end(), {"--overrides", (dir.path() / "note.csv").string()});
+    EXPECT_EQ(runGlimmer(noted, 120).exitCode, 0);
+    EXPECT_NE(readAll(rightPage).find("Your teacher: well done"), std::string::npos);
+    EXPECT_NE(readAll(rightPage).find("score 90 (set by your teacher; computed 100)"), std::string::npos);
+    EXPECT_EQ(runGlimmer(again, 120).exitCode, 0);
+    EXPECT_EQ(readAll(rightPage).find("Your teacher:"), std::string::npos);
+    EXPECT_NE(readAll(rightPage).find("score 100"), std::string::npos);
     auto typo = gradeArgs(cls, out);
     typo.insert(typo.end(), {"--only", "paintd"});
     auto r3 = runGlimmer(typo, 60);
