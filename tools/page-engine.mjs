@@ -29,9 +29,10 @@
 // slider, added, clickedAt, broken, reloaded, reverted, figures } (failed:
 // why, when a step could not be done); the page's console errors and
 // warnings go to stderr.
-//   node tools/page-engine.mjs ENGINE PAGE_URL OUT_DIR [--opening]
+//   node tools/page-engine.mjs ENGINE PAGE_URL OUT_DIR [--opening | --serve]
 //   ENGINE: chromium | firefox | webkit; PAGE_URL: the page (file:// or http://)
 //   --opening: only how PAGE_URL opens with nothing asked (see below).
+//   --serve: PAGE_URL is a student's link of `glimmer serve` (see below).
 import { spawn } from "node:child_process";
 import { mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { createServer } from "node:net";
@@ -39,8 +40,8 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 
 const [engine, pageUrl, outDir, mode] = process.argv.slice(2);
-if (!["chromium", "firefox", "webkit"].includes(engine) || !pageUrl || !outDir || (mode && mode !== "--opening")) {
-  console.error("usage: node tools/page-engine.mjs chromium|firefox|webkit PAGE_URL OUT_DIR [--opening]");
+if (!["chromium", "firefox", "webkit"].includes(engine) || !pageUrl || !outDir || (mode && mode !== "--opening" && mode !== "--serve")) {
+  console.error("usage: node tools/page-engine.mjs chromium|firefox|webkit PAGE_URL OUT_DIR [--opening | --serve]");
   process.exit(2);
 }
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
@@ -103,6 +104,59 @@ const puppeteerDriver = async () => {
   };
 };
 
+// --serve: a student of `glimmer serve` (tests/web/serve.sh) in this engine:
+// their link opened (the lesson drawn, their name in the toolbar); a
+// comment typed on blur.frag's second line (blank) after a click there, as
+// a person types (near the top: the editor need not scroll); the page says
+// it is saved; the browser closed and a fresh
+// one (a new profile: another machine) opens the link and finds the edit;
+// Hand in clicked: the grade and the feedback link appear. Prints { engine,
+// version, who, saved, continued, grade, feedbackHref } (failed: why).
+async function serveJourney() {
+  const seen = { engine, version: browser.version };
+  const comment = "// typed in " + engine;
+  const waitFor = async (expression, what, seconds = 60) => {
+    for (const end = Date.now() + seconds * 1000; Date.now() < end; await sleep(200)) {
+      const v = await browser.evaluate(expression);
+      if (v) return v;
+    }
+    throw new Error(`the page did not ${what}: ` + await browser.evaluate(`document.body.innerText.slice(0, 400)`));
+  };
+  const opened = async () => {
+    await browser.go(pageUrl);
+    await waitFor(`document.body && document.body.dataset.ready === "1" &&
+      document.getElementById("verdict").textContent.endsWith(": drawn")`, "draw the lesson");
+  };
+  try {
+    await opened();
+    seen.who = await browser.evaluate(`document.getElementById("serve-who").textContent`);
+    const lineEnd = await browser.evaluate(`(() => { const ed = glimmerPage.editor();
+      [...document.querySelectorAll("#tabs button")].find((b) => b.dataset.path === "blur.frag").click();
+      document.getElementById("editor").scrollIntoView({ block: "nearest" });
+      const at = ed.cm.charCoords({ line: 1, ch: ed.cm.getLine(1).length }, "window");
+      return [at.right + 30, (at.top + at.bottom) / 2]; })()`);
+    for (const kind of ["move", "down", "up"]) { await browser.mouse(kind, lineEnd[0], lineEnd[1]); await sleep(150); }
+    await browser.type(" " + comment);
+    seen.saved = await waitFor(`(() => { const t = document.getElementById("serve-saved").textContent;
+      return t.startsWith("saved (version") ? t : ""; })()`, "say the edit was saved");
+    await browser.close();
+    browser = engine === "webkit" ? await webkitDriver() : await puppeteerDriver();
+    await opened();
+    seen.continued = await browser.evaluate(`(glimmerPage.editor().open("blur.frag"),
+      glimmerPage.editor().cm.getValue().includes(${JSON.stringify(comment)}))`);
+    await browser.evaluate(`(document.getElementById("serve-hand-in").click(), 1)`);
+    seen.grade = await waitFor(`(() => { const g = document.getElementById("serve-grade");
+      return g.querySelector("a") ? g.textContent : ""; })()`, "show the grade", 180);
+    seen.feedbackHref = await browser.evaluate(`document.querySelector("#serve-grade a").getAttribute("href")`);
+  } catch (e) {
+    seen.failed = String(e && e.stack || e);
+  }
+  console.log(JSON.stringify(seen));
+  clearTimeout(watchdog);
+  await Promise.race([browser.close(), sleep(10000)]);
+  process.exit(seen.failed ? 1 : 0);
+}
+
 // WebKitGTK: WebKitWebDriver on a free loopback port, the session's
 // browser Debian's MiniBrowser in automation mode.
 const freePort = () => new Promise((resolve, reject) => {
@@ -160,6 +214,7 @@ const webkitDriver = async () => {
 let browser;
 try {
   browser = engine === "webkit" ? await webkitDriver() : await puppeteerDriver();
+  if (mode === "--serve") await serveJourney();
 } catch (e) {
   console.log(JSON.stringify({ engine, url: pageUrl, failed: `the browser did not start: ${e && e.stack || e}` }));
   await Promise.race([closeBrowser(), sleep(5000)]);

@@ -10,7 +10,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DGLIMMER_SANITIZE=ON >/dev/null
-tests=(test_lang test_image test_geometry test_plan test_shaderlog test_metrics test_bloom test_shader test_view test_grade)
+tests=(test_lang test_image test_geometry test_plan test_shaderlog test_metrics test_bloom test_shader test_view test_grade test_serve)
 gl_tests=(test_render test_glman)
 cmake --build build-asan -j2 --target "${tests[@]}" "${gl_tests[@]}" test_cli test_viewer
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

@@ -184,8 +184,11 @@ void ClassServer::Impl::routes() {
         res.set_header("Referrer-Policy", "no-referrer");
         const bool api = req.path.starts_with("/api/") || req.path.starts_with("/join") || req.path.starts_with("/teacher");
         if (!api) return httplib::Server::HandlerResponse::Unhandled;
-        std::string key = cookie(req, "glimmer_student");
-        if (key.empty()) key = cookie(req, "glimmer_teacher");
+        // A token counts only when it is one: made-up cookies are the address's, or a client could
+        // dodge its limit with a new cookie a request.
+        std::string key;
+        if (teacher(req)) key = "teacher";
+        else if (const auto s = student(req)) key = s->token;
         const bool ok = key.empty() ? byAddress.allow(req.remote_addr) : byToken.allow(key);
         if (ok) return httplib::Server::HandlerResponse::Unhandled;
         res.set_header("Retry-After", "1");
