@@ -43,7 +43,7 @@ TEST(CliUnix, HelpCommandIsTheSameAsHelpFlag) {
     auto bad = runGlimmer({"help", "rendr"});
     EXPECT_EQ(bad.exitCode, 2);
     EXPECT_EQ(bad.err, "glimmer: error: help: unknown command 'rendr'; the commands are 'render', 'check', 'view', "
-                       "'sheet', 'tradeoff', 'batch', 'batch-merge'\n");
+                       "'sheet', 'tradeoff', 'batch', 'batch-merge', 'serve'\n");
 }
 
 TEST(CliUnix, HelpStatesTheShortcutAndEveryDefault) {

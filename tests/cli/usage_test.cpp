@@ -19,7 +19,7 @@ TEST(CliUsage, NoSubcommand) {
 TEST(CliUsage, UnknownSubcommandIsNamed) {
     auto r = runGlimmer({"rendr", "scripts/bloom.glib"});
     EXPECT_EQ(r.exitCode, 2) << r.err;
-    EXPECT_NE(r.err.find("glimmer: error: unknown command 'rendr'; the commands are 'render', 'check', 'view', 'sheet', 'tradeoff', 'batch' and 'batch-merge'"),
+    EXPECT_NE(r.err.find("glimmer: error: unknown command 'rendr'; the commands are 'render', 'check', 'view', 'sheet', 'tradeoff', 'batch', 'batch-merge' and 'serve'"),
               std::string::npos)
         << r.err;
 }
