@@ -30,6 +30,7 @@ const state = () => page.evaluate(`(() => {
   return { script: document.getElementById("script").value, verdict: document.getElementById("verdict").textContent,
     shown: ed.shown(), typed: ed.cm.getValue().includes(${JSON.stringify(comment)}), values,
     scripts: [...document.getElementById("script").options].map((o) => o.value),
+    labels: [...document.getElementById("script").options].map((o) => o.text),
     picture: glimmerPage.snapshot() };
 })()`);
 const waitFor = async (condition, what) => {

@@ -30,6 +30,7 @@ let student = await openPage(studentLink);
 await student.navigate();
 await waitFor(student, `document.getElementById("verdict").textContent.endsWith(": drawn")`, "draw the lesson");
 seen.who = await student.evaluate(`document.getElementById("serve-who").textContent`);
+seen.scriptLabels = await student.evaluate(`[...document.getElementById("script").options].map((o) => o.text)`);
 // A comment typed at the end of SHADER, as a student types it.
 await student.evaluate(`[...document.querySelectorAll("#tabs button")].find((b) => b.dataset.path === ${JSON.stringify(shader)}).click();
   glimmerPage.editor().cm.setCursor({ line: glimmerPage.editor().cm.lineCount() - 1, ch: 10000 }); glimmerPage.editor().cm.focus()`);

@@ -188,6 +188,30 @@ try:
 finally:
     code = server.stop()
 check(code == 0, "SIGTERM stops the server cleanly", code)
+
+# Without a roster: the class code and a name not taken.
+open_lab = os.path.join(work, "open")
+os.makedirs(open_lab)
+make_lab(open_lab)
+server = Server(glimmer, page, open_lab)
+try:
+    form = {"Content-Type": "application/x-www-form-urlencoded"}
+    check(re.fullmatch(r"[2-9A-HJKMNP-Z]{4}-[2-9A-HJKMNP-Z]{4}", server.code or ""), "a class code is printed", server.code)
+    eve = Client(server.port)
+    status, _, body = eve.request("POST", "/join", "code=AAAA-AAAA&name=Eve", form)
+    check(status == 403 and b"not this class" in body and not eve.cookies, "a wrong class code is refused", status)
+    status, headers, _ = eve.request("POST", "/join", "code=%s&name=Eve+Adams" % server.code.lower(), form)
+    check(status == 303 and "glimmer_student" in eve.cookies, "the class code (any case) and a name join", status)
+    status, me = eve.json("GET", "/api/me")
+    check(status == 200 and me["name"] == "Eve Adams", "the student is who they said", me)
+    again = Client(server.port)
+    status, _, body = again.request("POST", "/join", "code=%s&name=Eve+Adams" % server.code, form)
+    check(status == 409 and b"taken" in body and not again.cookies,
+          "a name already in the class is refused (it would hand over their work)", status)
+    status, _, _ = again.request("POST", "/join", "code=%s&name=+++" % server.code, form)
+    check(status == 400, "an empty name is refused", status)
+finally:
+    server.stop()
 print("serve lab: %d passed, %d failed" % (passed, failed))
 if failed == 0:
     import shutil

@@ -33,6 +33,8 @@ check_reload "before the reload, the picked folder's seed must be drawn with bot
    and before["shown"] == "shaders/bloom.frag" and before["typed"]'
 check_reload "after the reload, the folder must be back: its scripts listed as before" \
   'after["scripts"] == before["scripts"] and any(s.startswith("/user:") for s in after["scripts"])'
+check_reload "a picked folder's scripts are labelled as the student's own (yours:), the bundled lesson's not" \
+  'before["labels"][0] == "yours: scripts/bloom.glib" and closed["labels"][0] == "scripts/bloom.glib"'
 check_reload "after the reload, the same script must be chosen and drawn" \
   'after["script"] == before["script"] and after["verdict"] == before["verdict"]'
 check_reload "after the reload, the same file must be open in the editor, with the typed text" \

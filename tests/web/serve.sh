@@ -35,6 +35,7 @@ check_seen() {  # DESCRIPTION PYTHON-CONDITION over what the page showed
   tally $? "$1: $(cut -c1-2000 <<<"$seen")"
 }
 check_seen "the page names the student" 'who == "Ada Lovelace:"'
+check_seen "the lesson's script is listed as the lesson's (not yours:)" 'scriptLabels == ["blur.glib"]'
 check_seen "an edit is saved to the server" 'saved.startswith("saved (version ")'
 check_seen "a fresh profile with the same link continues the edit" 'continued is True'
 check_seen "Hand in shows the grade and its feedback link" \

@@ -64,13 +64,16 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
   // The select's values are "ROOT:PATH"; the user's scripts come first. A
   // lesson (packed or linked) lists its own scripts only, each once; the
   // bundled lesson leaves out the project's test scripts (tests/...), which
-  // a student would click and find broken on purpose (issue 27).
+  // a student would click and find broken on purpose (issue 27). "yours: "
+  // marks a folder the student picked or dropped, never a lesson's own
+  // scripts (issue 39: a packed lesson's every script read "yours:").
   const listScripts = () => {
     select.length = 0;
+    const lessons = lesson && lesson.scripts;
     for (const root of lesson ? ["/user"] : ["/user", "/lesson"])
-      for (const s of root === "/user" && lesson && lesson.scripts ? lesson.scripts : scriptsUnder(root))
+      for (const s of root === "/user" && lessons ? lesson.scripts : scriptsUnder(root))
         if (root === "/user" || !s.startsWith("tests/"))
-          select.add(new Option((root === "/user" ? "yours: " : "") + s, root + ":" + s));
+          select.add(new Option((root === "/user" && !lessons ? "yours: " : "") + s, root + ":" + s));
   };
 
   // Replaces /user with `files`: [relativePath, Uint8Array] pairs. A path
