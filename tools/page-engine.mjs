@@ -55,6 +55,15 @@ const watchdog = setTimeout(async () => {
   process.exit(1);
 }, kSeconds * 1000);
 
+// The run's one JSON line, then the browser closed and the exit status
+// (1 when a step failed).
+const finishWith = async (result) => {
+  console.log(JSON.stringify(result));
+  clearTimeout(watchdog);
+  await Promise.race([closeBrowser(), sleep(10000)]);
+  process.exit(result.failed ? 1 : 0);
+};
+
 // Ended from outside (the group's timeout): the browser goes too.
 process.on("SIGTERM", async () => {
   await Promise.race([closeBrowser(), sleep(5000)]);
@@ -151,10 +160,7 @@ async function serveJourney() {
   } catch (e) {
     seen.failed = String(e && e.stack || e);
   }
-  console.log(JSON.stringify(seen));
-  clearTimeout(watchdog);
-  await Promise.race([browser.close(), sleep(10000)]);
-  process.exit(seen.failed ? 1 : 0);
+  await finishWith(seen);
 }
 
 // WebKitGTK: WebKitWebDriver on a free loopback port, the session's
@@ -385,7 +391,4 @@ try {
 } catch (e) {
   result.failed = String(e && e.stack || e);
 }
-console.log(JSON.stringify(result));
-clearTimeout(watchdog);
-await Promise.race([browser.close(), sleep(10000)]);
-process.exit(result.failed ? 1 : 0);
+await finishWith(result);

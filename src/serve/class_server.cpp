@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fmt/format.h>
 
+#include "grade/grade_report.h"  // htmlEscape: one escaping for every page Glimmer writes
 #include "serve/join_qr.h"
 #include "serve/request_limits.h"
 #include "serve/serve_assets.h"
@@ -39,21 +40,6 @@ std::string contentType(const std::string& path) {
     for (const auto& [ext, type] : kTypes)
         if (path.ends_with(ext)) return type;
     return "application/octet-stream";
-}
-
-std::string htmlEscape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&#39;"; break;
-            default: out += c;
-        }
-    }
-    return out;
 }
 
 // Compares without stopping at the first difference (a token's prefix is not
