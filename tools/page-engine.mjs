@@ -126,7 +126,9 @@ async function serveJourney() {
   const comment = "// typed in " + engine;
   const waitFor = async (expression, what, seconds = 60) => {
     for (const end = Date.now() + seconds * 1000; Date.now() < end; await sleep(200)) {
-      const v = await browser.evaluate(expression);
+      // Asked while the link's redirect is still loading the page, WebKitWebDriver may answer
+      // "Could not parse script result" (seen once in three runs on a loaded machine): asked again.
+      const v = await browser.evaluate(expression).catch(() => null);
       if (v) return v;
     }
     throw new Error(`the page did not ${what}: ` + await browser.evaluate(`document.body.innerText.slice(0, 400)`));

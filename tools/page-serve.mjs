@@ -62,6 +62,11 @@ seen.uAddBefore = await student.evaluate(`glimmerPage.value("uAdd")`);
 await teacher.evaluate(`document.getElementById("follow-sets").value = "uAdd=1.75"; document.getElementById("follow").click()`);
 seen.uAddAfter = await waitFor(student, `(() => { const v = glimmerPage.value("uAdd"); return Math.abs(parseFloat(v) - 1.75) < 1e-6 ? v : ""; })()`,
                                "follow the teacher's push", 20);
+// A script pushed: the student's page shows it, at the pushed value.
+await teacher.evaluate(`document.getElementById("follow-sets").value = "script=second.glib;uAdd=0.25"; document.getElementById("follow").click()`);
+seen.pushedScript = await waitFor(student, `(() => { const v = document.getElementById("verdict").textContent;
+  return v === "second.glib: drawn" && Math.abs(parseFloat(glimmerPage.value("uAdd")) - 0.25) < 1e-6 ? v : ""; })()`,
+                                  "show the pushed script", 20);
 console.log(JSON.stringify(seen));
 await teacher.close(null);
 student.close(0);

@@ -17,6 +17,7 @@ need_engine Xvfb firefox-esr tools/node_modules/puppeteer-core WebKitWebDriver
 lab="$pictures/lab"
 mkdir -p "$lab"
 cp -r tests/data/grading/blur "$lab/lesson"
+cp "$lab/lesson/blur.glib" "$lab/lesson/second.glib"  # a second script for the teacher to push
 cp -r tests/data/grading/blur "$lab/solution"
 printf 'name\nAda Lovelace\nBea Firefox\nCy WebKit\n' > "$lab/roster.csv"
 "$g" serve "$lab/lesson" --solution "$lab/solution/blur.glib" --roster "$lab/roster.csv" --port 0 --host 127.0.0.1 \
@@ -35,13 +36,14 @@ check_seen() {  # DESCRIPTION PYTHON-CONDITION over what the page showed
   tally $? "$1: $(cut -c1-2000 <<<"$seen")"
 }
 check_seen "the page names the student" 'who == "Ada Lovelace:"'
-check_seen "the lesson's script is listed as the lesson's (not yours:)" 'scriptLabels == ["blur.glib"]'
+check_seen "the lesson's scripts are listed as the lesson's (not yours:)" 'scriptLabels == ["blur.glib", "second.glib"]'
 check_seen "an edit is saved to the server" 'saved.startswith("saved (version ")'
 check_seen "a fresh profile with the same link continues the edit" 'continued is True'
 check_seen "Hand in shows the grade and its feedback link" \
   'grade.startswith("hand-in 1: pass, 100") and feedbackHref == "api/feedback/1"'
 check_seen "the teacher's grid shows the student graded" 'card == "hand-in 1: pass, 100" and studentsInGrid == 3'
 check_seen "follow-me moves the student's slider" 'float(uAddAfter) == 1.75 and float(uAddBefore) != 1.75'
+check_seen "follow-me with script= shows that script" 'pushedScript == "second.glib: drawn"'
 for pair in "firefox:Bea Firefox" "webkit:Cy WebKit"; do
   engine="${pair%%:*}" name="${pair#*:}"
   echo "  $name in $engine: a link, a typed edit, a fresh browser, a hand-in"

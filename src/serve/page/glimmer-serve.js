@@ -6,7 +6,8 @@
 //     again until it is;
 //   - Hand in: the work as saved, graded on the server; the verdict and the
 //     feedback page appear here when grading is done;
-//   - the teacher's "follow me": pushed slider values applied once each;
+//   - the teacher's "follow me": pushed slider values (and "script=PATH":
+//     the lesson's script to show) applied once each;
 //   - now and then a small picture of the view for the teacher's grid.
 // Data only goes to the page's own origin (fetch of relative URLs).
 "use strict";
@@ -84,7 +85,15 @@ globalThis.glimmerServe = (() => {
   const applyFollow = (follow) => {
     const seen = Number(localStorage.getItem(followKey) || 0);
     if (!follow || !follow.id || follow.id <= seen || !globalThis.glimmerPage) return;
-    for (const set of follow.sets.split(";").map((s) => s.trim()).filter(Boolean)) globalThis.glimmerPage.set(set);
+    // "script=PATH" shows that script of the lesson first (the projector's), then the sliders.
+    const sets = follow.sets.split(";").map((s) => s.trim()).filter(Boolean);
+    const script = sets.find((s) => s.startsWith("script="));
+    const select = document.getElementById("script");
+    if (script && [...select.options].some((o) => o.value === "/user:" + script.slice(7))) {
+      select.value = "/user:" + script.slice(7);
+      globalThis.glimmerPage.view(select.value);
+    }
+    for (const set of sets.filter((s) => s !== script)) globalThis.glimmerPage.set(set);
     try { localStorage.setItem(followKey, String(follow.id)); } catch {}
   };
   const showHandIn = (h) => {

@@ -2,7 +2,8 @@
 // refreshed every two seconds from /api/class: their picture as last sent,
 // their page's verdict line at their last save, their hand-ins and grade; a
 // link to their work (read-only) and their feedback. "Push to the class"
-// sends slider values every student's page applies once (follow me).
+// sends slider values (and script=PATH, the script to show) every student's
+// page applies once (follow me).
 "use strict";
 (() => {
   const grid = document.getElementById("grid");
