@@ -177,8 +177,11 @@ int HandInGrader::gradeQueued() {
         // exit 0 or 1 (a student's error is a verdict); 2 or a kill: batch refused or never finished,
         // and a record left from an earlier hand-in is not this one's.
         if (row == rows.end() || (exit != 0 && exit != 1)) {
-            // batch refused the run: its own words, so the teacher sees why.
-            const std::string tail = logText.size() > 2000 ? logText.substr(logText.size() - 2000) : logText;
+            // batch refused the run: its own words, so the teacher sees why; the server's folders and
+            // the solution's named as relative (a student reads this too).
+            std::string tail = logText.size() > 2000 ? logText.substr(logText.size() - 2000) : logText;
+            for (const std::string& dir : {settings_.stateDir + "/", fs::path(settings_.solution).parent_path().string() + "/"})
+                for (std::size_t at; (at = tail.find(dir)) != std::string::npos;) tail.erase(at, dir.size());
             store_.finishHandIn(h.id, "failed", "", 0, fmt::format("grading did not run (exit {}): {}", exit, tail));
             continue;
         }

@@ -182,6 +182,16 @@ try:
     status, _ = ada.json("POST", "/api/follow", {"sets": "uAdd=0"})
     check(status == 403, "a student cannot push to the class", status)
 
+    # Grading that cannot run (the solution gone) fails the hand-in with batch's reason, the
+    # server's and the solution's folders not named (a student reads it).
+    os.rename(solution, solution + ".away")
+    status, answer = emile.json("POST", "/api/handin", {})
+    failed_run = wait_graded(emile, answer["handin"])
+    os.rename(solution + ".away", solution)
+    check(failed_run and failed_run["state"] == "failed" and "grading did not run (exit 2)" in failed_run["notes"]
+          and "blur.glib" in failed_run["notes"] and work not in failed_run["notes"],
+          "a run batch refuses fails the hand-in, saying why without the server's paths", failed_run)
+
     # Rate: a page polling in a loop is slowed, not served without bound.
     codes = [bob.request("GET", "/api/me")[0] for _ in range(120)]
     check(429 in codes and codes[0] == 200, "too many requests get 429", sorted(set(codes)))
