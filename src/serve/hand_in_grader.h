@@ -29,7 +29,7 @@ struct GraderSettings {
     std::string stateDir;                // grading/class, grading/graded, feedback/ are under it
     std::vector<std::string> batchArgs;  // more of batch's options (--jobs, --max-memory, --overrides ...)
     double runLimitSeconds = 900;        // a whole run, on top of batch's own per-student limits
-    int perRun = 16;                     // hand-ins graded in one run at most
+    int perRun = 48;                     // hand-ins graded in one run at most
 };
 
 class HandInGrader {
