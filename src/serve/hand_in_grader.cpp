@@ -11,6 +11,7 @@
 #include <fmt/format.h>
 #include <map>
 
+#include "grade/grade_merge.h"
 #include "grade/grade_row.h"
 #include "util/read_file.h"
 #include "util/write_file.h"
@@ -148,20 +149,13 @@ int HandInGrader::gradeQueued() {
         for (const HandIn& h : toGrade) store_.finishHandIn(h.id, "queued", "", 0, "");
         return 0;
     }
-    // The verdicts: the records batch wrote.
+    // The verdicts: the records batch wrote, read as --resume reads them.
     std::map<std::string, GradeRow> rows;
     std::string text, why;
-    if (readRegularFile((graded / "grades.jsonl").string(), std::size_t(1) << 30, text, why)) {
-        std::size_t at = 0;
-        while (at < text.size()) {
-            std::size_t end = text.find('\n', at);
-            if (end == std::string::npos) end = text.size();
-            GradeRow row;
-            std::string bad;
-            if (parseGradeRecord(text.substr(at, end - at), row, bad)) rows[row.student] = row;
-            at = end + 1;
-        }
-    }
+    std::vector<GradeRow> records;
+    if (readRegularFile((graded / "grades.jsonl").string(), std::size_t(1) << 30, text, why) &&
+        parseRecords(text, (graded / "grades.jsonl").string(), records, why))
+        for (GradeRow& r : records) rows[r.student] = std::move(r);
     std::string logText;
     readRegularFile(logFile, 1 << 20, logText, why);
     // Another batch holds the graded folder (one from before a restart, finishing): not the
