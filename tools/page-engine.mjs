@@ -33,6 +33,10 @@
 //   ENGINE: chromium | firefox | webkit; PAGE_URL: the page (file:// or http://)
 //   --opening: only how PAGE_URL opens with nothing asked (see below).
 //   --serve: PAGE_URL is a student's link of `glimmer serve` (see below).
+//   --tour: the panel tour (tools/panel-tour.mjs): { engine, version, steps,
+//   failures }.
+//   --layout=WxH: the page in a real window of that outer size, opened,
+//   with a watch on and with an error showing (tools/page-window-layout.mjs).
 import { spawn } from "node:child_process";
 import { mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { createServer } from "node:net";
@@ -40,8 +44,11 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 
 const [engine, pageUrl, outDir, mode] = process.argv.slice(2);
-if (!["chromium", "firefox", "webkit"].includes(engine) || !pageUrl || !outDir || (mode && mode !== "--opening" && mode !== "--serve")) {
-  console.error("usage: node tools/page-engine.mjs chromium|firefox|webkit PAGE_URL OUT_DIR [--opening | --serve]");
+// --layout=WxH: a real window of that outer size (see tools/page-window-layout.mjs).
+const windowSize = mode && mode.startsWith("--layout=") ? mode.slice(9).split("x").map(Number) : null;
+if (!["chromium", "firefox", "webkit"].includes(engine) || !pageUrl || !outDir ||
+    (mode && !["--opening", "--serve", "--tour"].includes(mode) && !(windowSize && windowSize.length === 2 && windowSize.every((n) => n > 0)))) {
+  console.error("usage: node tools/page-engine.mjs chromium|firefox|webkit PAGE_URL OUT_DIR [--opening | --serve | --tour | --layout=WxH]");
   process.exit(2);
 }
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
@@ -78,16 +85,19 @@ const puppeteerDriver = async () => {
   const profile = mkdtempSync(join(tmpdir(), `glimmer-${engine}-`));
   closeBrowser = async () => { rmSync(profile, { recursive: true, force: true }); };
   const options = engine === "chromium" ? {
-    browser: "chrome", executablePath: "/usr/bin/chromium", headless: true, userDataDir: profile,
+    browser: "chrome", executablePath: "/usr/bin/chromium", headless: !windowSize, userDataDir: profile,
     // ANGLE over the X server's OpenGL (Mesa's llvmpipe, the rasterizer
     // `glimmer render` uses and Firefox and WebKitGTK draw with here);
     // without a display, SwiftShader as the other groups use.
     args: ["--no-sandbox", "--allow-file-access-from-files", "--ignore-gpu-blocklist",
-           process.env.DISPLAY ? "--use-angle=gl" : "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
+           process.env.DISPLAY ? "--use-angle=gl" : "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+           ...(windowSize ? [`--window-size=${windowSize[0]},${windowSize[1]}`, "--window-position=0,0"] : [])],
+    ...(windowSize ? { defaultViewport: null } : {}),
   } : {
     // Headless Firefox has no WebGL 2 here: a real window under Xvfb.
     browser: "firefox", executablePath: "/usr/bin/firefox-esr", headless: false, userDataDir: profile,
-    args: ["--width=1400", "--height=1000"], defaultViewport: null,
+    args: windowSize ? [`--width=${windowSize[0]}`, `--height=${windowSize[1]}`] : ["--width=1400", "--height=1000"],
+    defaultViewport: null,
     // Opened from disk, Firefox reads the files beside the page (its
     // module's .wasm) as it is: no preference is changed.
   };
@@ -97,7 +107,7 @@ const puppeteerDriver = async () => {
     try { rmSync(profile, { recursive: true, force: true, maxRetries: 10, retryDelay: 100 }); } catch {}
   };
   const page = (await browser.pages())[0] || await browser.newPage();
-  if (engine === "chromium") await page.setViewport({ width: 1400, height: 1000 });
+  if (engine === "chromium" && !windowSize) await page.setViewport({ width: 1400, height: 1000 });
   // What the page says on the console goes to stderr (the group keeps it).
   page.on("pageerror", (e) => console.error(`page error: ${e.message}`));
   page.on("console", (m) => { if (m.type() === "error" || m.type() === "warn") console.error(`console ${m.type()}: ${m.text()}`); });
@@ -106,9 +116,18 @@ const puppeteerDriver = async () => {
     version: (await browser.version()).replace(/^Chrome\//, "Chromium ").replace(/^firefox\//i, "Firefox ESR "),
     evaluate: (expression) => page.evaluate(expression),
     type: (text) => page.keyboard.type(text),
-    // The mouse at (x, y) of the page's viewport: "move", "down" or "up".
-    mouse: (kind, x, y) => kind === "move" ? page.mouse.move(x, y) : page.mouse[kind](),
+    // Keys pressed in order, held a moment (a few of the page's frames: its
+    // panel reads keys as held or not at each frame), let go in reverse.
+    hold: async (keys) => {
+      for (const k of keys) await page.keyboard.down(k);
+      await sleep(150);
+      for (const k of [...keys].reverse()) await page.keyboard.up(k);
+    },
+    // The mouse at (x, y) of the page's viewport: "move", "down" or "up";
+    // button "left" (the default) or "right".
+    mouse: (kind, x, y, button = "left") => kind === "move" ? page.mouse.move(x, y) : page.mouse[kind]({ button }),
     go: (to) => page.goto(to, { waitUntil: "load" }),
+    screenshot: async () => Buffer.from(await page.screenshot()),
     close: closeBrowser,
   };
 };
@@ -202,7 +221,8 @@ const webkitDriver = async () => {
     await call("DELETE", `/session/${id}`).catch(() => {});
     driver.kill();
   };
-  await call("POST", `/session/${id}/window/rect`, { width: 1400, height: 1000 }).catch(() => {});
+  await call("POST", `/session/${id}/window/rect`, windowSize ? { x: 0, y: 0, width: windowSize[0], height: windowSize[1] }
+                                                              : { width: 1400, height: 1000 }).catch(() => {});
   // Key input as a keyboard gives it: a press and a release a character.
   const keys = (text) => [...text].flatMap((c) => [{ type: "keyDown", value: c }, { type: "keyUp", value: c }]);
   return {
@@ -210,11 +230,30 @@ const webkitDriver = async () => {
     evaluate: (expression) => call("POST", `/session/${id}/execute/sync`,
       { script: `return (${expression});`, args: [] }),
     type: (text) => call("POST", `/session/${id}/actions`, { actions: [{ type: "key", id: "keyboard", actions: keys(text) }] }),
-    mouse: (kind, x, y) => call("POST", `/session/${id}/actions`, { actions: [{ type: "pointer", id: "mouse",
+    hold: (names) => {
+      const code = (k) => ({ Control: "\uE009", Enter: "\uE007", Shift: "\uE008" })[k] || k;
+      return call("POST", `/session/${id}/actions`, { actions: [{ type: "key", id: "keyboard", actions: [
+        ...names.map((k) => ({ type: "keyDown", value: code(k) })), { type: "pause", duration: 150 },
+        ...[...names].reverse().map((k) => ({ type: "keyUp", value: code(k) }))] }] });
+    },
+    // A right press and release through WebDriver come to the page as a
+    // press of button 2 and a release of button 0 with no pointerup
+    // (WebKitGTK 2.50's automation, seen here), so ImGui never sees the right
+    // button let go: those two are given to the page as DOM mouse events at
+    // the same place instead, what a real right click makes.
+    mouse: (kind, x, y, button = "left") => kind !== "move" && button === "right"
+      ? call("POST", `/session/${id}/execute/sync`, { script: `const [type, x, y] = arguments;
+          const at = document.elementFromPoint(x, y) || document.body;
+          at.dispatchEvent(new MouseEvent(type, { bubbles: true, cancelable: true, clientX: x, clientY: y, button: 2,
+                                                  buttons: type === "mousedown" ? 2 : 0 }));
+          if (type === "mouseup") at.dispatchEvent(new MouseEvent("contextmenu", { bubbles: true, cancelable: true, clientX: x, clientY: y, button: 2 }));
+          return 1;`, args: [kind === "down" ? "mousedown" : "mouseup", x, y] })
+      : call("POST", `/session/${id}/actions`, { actions: [{ type: "pointer", id: "mouse",
       parameters: { pointerType: "mouse" }, actions: [kind === "move"
         ? { type: "pointerMove", x: Math.round(x), y: Math.round(y), origin: "viewport" }
-        : { type: kind === "down" ? "pointerDown" : "pointerUp", button: 0 }] }] }),
+        : { type: kind === "down" ? "pointerDown" : "pointerUp", button: button === "right" ? 2 : 0 }] }] }),
     go: (to) => call("POST", `/session/${id}/url`, { url: to }),
+    screenshot: async () => Buffer.from(await call("GET", `/session/${id}/screenshot`), "base64"),
     close: closeBrowser,
   };
 };
@@ -223,6 +262,15 @@ let browser;
 try {
   browser = engine === "webkit" ? await webkitDriver() : await puppeteerDriver();
   if (mode === "--serve") await serveJourney();
+  if (windowSize) {
+    const { measureLayout } = await import("./page-window-layout.mjs");
+    await finishWith({ engine, version: browser.version, url: pageUrl, size: windowSize.join("x"),
+                       ...(await measureLayout(browser, pageUrl, outDir, windowSize)) });
+  }
+  if (mode === "--tour") {
+    const { runTour } = await import("./panel-tour.mjs");
+    await finishWith({ engine, version: browser.version, url: pageUrl, ...(await runTour(browser, pageUrl)) });
+  }
 } catch (e) {
   console.log(JSON.stringify({ engine, url: pageUrl, failed: `the browser did not start: ${e && e.stack || e}` }));
   await Promise.race([closeBrowser(), sleep(5000)]);

@@ -4,6 +4,7 @@
 // ImGui's OpenGL backend draws the panel. It works with no script loaded (a
 // first load that failed), so the viewer never calls GL itself.
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <string>
 
@@ -21,6 +22,11 @@ public:
     static std::unique_ptr<WindowFrame> create(const GetProcAddress& getProc, std::string& error);
     // Binds framebuffer 0 at width x height and clears it to this colour.
     void begin(int width, int height, float r, float g, float b) const;
+    // A hash (FNV-1a) of the RGBA bytes framebuffer 0 holds in the rectangle
+    // at (x, y) from the top left, w x h, of a window `windowH` tall: what the
+    // `panel` command reports as `picture=`, so a tour that clicks a control
+    // sees whether the picture on screen changed (view/panel.h).
+    std::uint64_t hashRegion(int x, int y, int w, int h, int windowH) const;
 
 private:
     WindowFrame();

@@ -1,6 +1,7 @@
 // The Dear ImGui panel, docked beside the picture: errors first, then the
 // viewer's buttons and readouts, then a group of controls per Program, as
 // glman had (uniforms of the same name in several Programs are one control).
+#include <algorithm>
 #include <filesystem>
 #include <iostream>
 
@@ -66,12 +67,13 @@ void control(ViewerState& s, const UniformControl& c) {
         ImGui::TextDisabled("%s = %s", u.name.c_str(), valuesText(v).c_str());
         break;
     }
-    ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-    s.controlRects[u.name] = {at.x, at.y, size.x, size.y};
+    if (u.form == UniformSetting::Form::Range || u.form == UniformSetting::Form::Color) rememberControl(s, u.name, ImGui::CalcItemWidth());
+    else rememberControl(s, u.name);
     if (changed)
         for (int q : c.programs) s.values->set(q, u.name, v);
     if (c.programs.size() > 1 && ImGui::BeginPopupContextItem(label.c_str())) {
         if (ImGui::MenuItem("Split per pass")) s.splitUniforms.push_back(u.name);
+        rememberControl(s, "Split per pass");
         ImGui::EndPopup();
     }
 }
@@ -106,8 +108,7 @@ void unsetControl(ViewerState& s, int program, const UnsetUniform& u) {
         changed = n == 1 ? ImGui::SliderFloat(label.c_str(), f, 0.f, 1.f) : ImGui::DragScalarN(label.c_str(), ImGuiDataType_Float, f, n, 0.01f);
         for (int k = 0; k < n; ++k) v[size_t(k)] = f[k];
     }
-    ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-    s.controlRects[u.name] = {at.x, at.y, size.x, size.y};
+    rememberControl(s, u.name, u.type == "bool" ? 0.f : ImGui::CalcItemWidth());
     if (ImGui::IsItemHovered() && !u.example.empty())
         ImGui::SetTooltip("not in the script: add '%s' to the Program line to keep a value", u.example.c_str());
     if (changed) s.values->set(program, u.name, v);
@@ -140,7 +141,9 @@ void controls(ViewerState& s) {
         // Open when it has a slider of its own (a merged one lives in the
         // first Program's group).
         bool sliders = hasSlider(mine) || !unset.empty();
-        if (ImGui::CollapsingHeader(header.c_str(), sliders ? ImGuiTreeNodeFlags_DefaultOpen : 0)) {
+        const bool open = ImGui::CollapsingHeader(header.c_str(), sliders ? ImGuiTreeNodeFlags_DefaultOpen : 0);
+        rememberControl(s, "Program " + decl.name);  // the group's header: a click folds it
+        if (open) {
             if (!decl.notes.empty()) {  // what the script says this pass does (MessageBox, ## comments)
                 ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.75f, 0.85f, 1.f, 1.f));
                 ImGui::TextWrapped("%s", decl.notes.c_str());
@@ -153,7 +156,9 @@ void controls(ViewerState& s) {
                 ImGui::PopStyleColor();
                 for (const auto& u : unset) unsetControl(s, int(p), u);
             }
-            if (sliders && ImGui::Button("Reset")) {
+            const bool reset = sliders && ImGui::Button("Reset");
+            if (sliders) rememberControl(s, "Reset " + decl.name);
+            if (reset) {
                 for (const auto* c : mine)
                     for (int q : c->programs) s.values->set(q, c->name, c->setting->values);
                 // Back to the 0 OpenGL gave them (an empty value would upload
@@ -164,7 +169,10 @@ void controls(ViewerState& s) {
         }
         ImGui::PopID();
     }
-    if (!s.splitUniforms.empty() && ImGui::SmallButton("Merge same-name uniforms again")) s.splitUniforms.clear();
+    if (!s.splitUniforms.empty()) {
+        if (ImGui::SmallButton("Merge same-name uniforms again")) s.splitUniforms.clear();
+        rememberControl(s, "Merge");
+    }
 }
 
 // Errors first, each a line to click (copies file:line); the full message
@@ -181,7 +189,13 @@ void messages(ViewerState& s) {
             ImGui::PushID(int(i));
             if (gMono) ImGui::PushFont(gMono);
             ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.f, 0.55f, 0.5f, 1.f));
-            if (ImGui::Selectable(s.errors[i].text.c_str())) {
+            // Wrapped, not cut at the panel's edge; a click on it copies as a Selectable did.
+            ImGui::TextWrapped("%s", s.errors[i].text.c_str());
+            const bool copy = ImGui::IsItemClicked();
+            if (ImGui::IsItemHovered())
+                ImGui::GetWindowDrawList()->AddRect(ImGui::GetItemRectMin(), ImGui::GetItemRectMax(), IM_COL32(255, 140, 128, 160));
+            rememberControl(s, fmt::format("Error {}", i + 1));
+            if (copy) {
                 ImGui::SetClipboardText(s.errors[i].where.c_str());
                 s.status = "copied " + s.errors[i].where;
                 std::cerr << "glimmer view: " << s.status << "\n";
@@ -194,9 +208,12 @@ void messages(ViewerState& s) {
     }
     if (!s.warnings.empty()) {
         std::string label = fmt::format("{} warning{}###warnings", s.warnings.size(), s.warnings.size() == 1 ? "" : "s");
-        if (ImGui::TreeNode(label.c_str())) {
+        const bool open = ImGui::TreeNode(label.c_str());
+        rememberControl(s, "Warnings");
+        if (open) {
             if (gMono) ImGui::PushFont(gMono);
             for (const auto& w : s.warnings) ImGui::TextColored(ImVec4(1.f, 0.8f, 0.35f, 1.f), "%s", w.text.c_str());
+            rememberControl(s, "Warnings open");  // the last one, shown
             if (gMono) ImGui::PopFont();
             ImGui::TreePop();
         }
@@ -210,18 +227,30 @@ std::string targetName(const Plan& plan, int tex) {
     return fmt::format("texture {}", tex);
 }
 
-bool targetCombo(const char* label, const Plan& plan, const std::vector<std::pair<int, unsigned>>& targets, int& shown) {
+// A list of the targets; its items are remembered as "LABEL: NAME" while it is open.
+bool targetCombo(ViewerState& s, const char* label, const Plan& plan, const std::vector<std::pair<int, unsigned>>& targets,
+                 int& shown) {
     bool changed = false;
-    if (ImGui::BeginCombo(label, targetName(plan, shown).c_str())) {
+    const bool open = ImGui::BeginCombo(label, targetName(plan, shown).c_str());
+    rememberControl(s, label, ImGui::CalcItemWidth());
+    if (open) {
         if (ImGui::Selectable("screen", shown < 0)) shown = -1, changed = true;
-        for (const auto& [tex, name] : targets)
+        rememberControl(s, fmt::format("{}: screen", label));
+        for (const auto& [tex, name] : targets) {
             if (ImGui::Selectable(targetName(plan, tex).c_str(), shown == tex)) shown = tex, changed = true;
+            rememberControl(s, fmt::format("{}: {}", label, targetName(plan, tex)));
+        }
         ImGui::EndCombo();
     }
     return changed;
 }
 
 }  // namespace
+
+void rememberControl(ViewerState& s, const std::string& name, float frameWidth) {
+    const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
+    s.controlRects[name] = {at.x, at.y, frameWidth > 0 ? std::min(size.x, frameWidth) : size.x, size.y};
+}
 
 void setUpFonts(float scale) {
     ImGuiIO& io = ImGui::GetIO();
@@ -260,6 +289,42 @@ void setUpFonts(float scale) {
 
 float fontsScale() { return gFontsScale; }
 
+std::string panelState(const ViewerState& s, const std::optional<WatchRange>& range, int loads) {
+    auto word = [](std::string v) {
+        std::string out;
+        for (char c : v) out += c == ' ' ? "%20" : c == '%' ? "%25" : c == '\n' ? "%0A" : std::string(1, c);
+        return out.empty() ? std::string("-") : out;
+    };
+    auto onOff = [](bool b) { return b ? "on" : "off"; };
+    std::string line = fmt::format("panel loads={} values={} size={}x{} aspect={} playing={} time={:.3f} view={:g},{:g},{:g}",
+                                   loads, onOff(s.showValues), s.hardcopy[0], s.hardcopy[1], onOff(s.hardcopyAspect),
+                                   onOff(s.playing), s.time, s.yaw, s.pitch, s.zoom);
+    if (s.good) {
+        const Plan& plan = s.good->plan;
+        line += fmt::format(" shown={} split={} left={} right={} divider={:.2f}", word(targetName(plan, s.shownTexture)),
+                            onOff(s.compare), word(targetName(plan, s.compareLeft)), word(targetName(plan, s.compareRight)),
+                            s.divider);
+    }
+    line += fmt::format(" probe={} watch={} range={} errors={} status={}", onOff(s.probe), word(s.watch ? s.watchSpec : ""),
+                        range ? fmt::format("{:g},{:g}", range->lo, range->hi) : "auto", s.errors.size(), word(s.status));
+    if (s.good && s.values) {
+        for (const auto& c : mergedUniforms(s.good->plan, s.splitUniforms)) {
+            std::vector<double> v = s.values->get(c.programs.front(), c.name);
+            std::string text;
+            for (double x : v) text += (text.empty() ? "" : ",") + fmt::format("{:g}", x);
+            line += fmt::format(" {}={}", word(c.name), word(text));
+        }
+        if (s.renderer)  // the ones the shaders read and the script never sets, once moved
+            for (size_t p = 0; p < s.good->plan.programs.size(); ++p)
+                for (const auto& u : s.renderer->unsetUniforms(int(p))) {
+                    std::string text;
+                    for (double x : s.values->get(int(p), u.name)) text += (text.empty() ? "" : ",") + fmt::format("{:g}", x);
+                    line += fmt::format(" {}={}", word(u.name), word(text));
+                }
+    }
+    return line;
+}
+
 std::string overlayText(const ViewerState& s) {
     if (!s.good || !s.values) return {};
     std::string text;
@@ -276,7 +341,10 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
     s.controlRects.clear();
     float em = ImGui::GetFontSize();
     ImGui::PushItemWidth(em * 11);  // a fixed width: the panel's width follows its content
-    ImGui::PushTextWrapPos(em * 30);
+    // Text wraps at 30 em, or inside the width the shell pins the panel to
+    // (the page's): a message is never cut at the panel's edge.
+    const float pad = ImGui::GetStyle().WindowPadding.x;
+    ImGui::PushTextWrapPos(s.panelMaxW > 0 ? std::min(em * 30, s.panelMaxW - pad) : em * 30);
     if (s.good) ImGui::TextUnformatted(s.good->plan.scriptFile.c_str());
     messages(s);
     auto command = [](ViewCommand::Kind kind, std::string file = {}) {
@@ -285,11 +353,15 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
         c.name = std::move(file);
         return c;
     };
+    // Each control remembered under the name its label starts with.
     if (ImGui::Button("Reload (R)")) asked.push_back(command(ViewCommand::Kind::Reload));
+    rememberControl(s, "Reload");
     ImGui::SameLine();
     if (ImGui::Button("Save PNG (S)")) asked.push_back(command(ViewCommand::Kind::Save));  // a new name each time
+    rememberControl(s, "Save PNG");
     ImGui::SameLine();
     ImGui::Checkbox("Show values", &s.showValues);
+    rememberControl(s, "Show values");
     ImGui::SetNextItemWidth(em * 8);
     int before[2] = {s.hardcopy[0], s.hardcopy[1]};
     if (ImGui::InputInt2("##size", s.hardcopy) && s.hardcopyAspect && s.pictureW > 0) {
@@ -297,20 +369,25 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
         if (s.hardcopy[0] != before[0]) s.hardcopy[1] = std::max(1, int(std::lround(double(s.hardcopy[0]) * s.pictureH / s.pictureW)));
         else if (s.hardcopy[1] != before[1]) s.hardcopy[0] = std::max(1, int(std::lround(double(s.hardcopy[1]) * s.pictureW / s.pictureH)));
     }
+    rememberControl(s, "Size", em * 8);  // two fields: the width's is the left half
     ImGui::SameLine();
     ImGui::Checkbox("aspect", &s.hardcopyAspect);
+    rememberControl(s, "aspect");
     ImGui::SameLine();
     if (ImGui::Button("Save at size")) {
         ViewCommand c = command(ViewCommand::Kind::Save, nextFreeName("glimmer-hardcopy", ".png"));
         c.unit = -2;  // marks a hardcopy at s.hardcopy
         asked.push_back(c);
     }
+    rememberControl(s, "Save at size");
     if (ImGui::Button(s.playing ? "Pause (space)" : "Play (space)")) s.playing = !s.playing;
+    rememberControl(s, "Play");
     ImGui::SameLine();
     if (ImGui::Button("Step")) {
         s.playing = false;
         s.time += 1.0 / 30.0;
     }
+    rememberControl(s, "Step");
     ImGui::SameLine();
     ImGui::Text("t = %.2f s", s.time);
     if (s.turns) {
@@ -319,18 +396,23 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
             s.zoom = 1;
             s.sceneMoved = true;
         }
+        rememberControl(s, "Reset view");
         ImGui::SameLine();
         ImGui::TextDisabled("drag: turn, wheel: zoom");
     } else {
         ImGui::TextDisabled("a flat picture: the mouse does not turn it");
     }
     if (!s.keyHint.empty()) ImGui::TextDisabled("%s", s.keyHint.c_str());
+    // The sliders next, near the top where a projector shows them: the
+    // teaching aids below may grow (a watch's summary) without pushing
+    // them out of the window.
+    if (s.good) controls(s);
 
     if (s.good) {
         const Plan& plan = s.good->plan;
         // Teaching aids: the pass inspector with a thumbnail of every target,
         // a before/after split, a probe of the value under the pointer.
-        targetCombo("show", plan, thumbnails, s.shownTexture);
+        targetCombo(s, "show", plan, thumbnails, s.shownTexture);
         float th = std::round(em * 4);
         for (size_t i = 0; i < thumbnails.size(); ++i) {
             const auto& [tex, name] = thumbnails[i];
@@ -342,23 +424,23 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
             if (ImGui::ImageButton(reinterpret_cast<ImTextureID>(static_cast<intptr_t>(name)), ImVec2(th, th), ImVec2(0, 1),
                                    ImVec2(1, 0), s.shownTexture == tex ? 3 : 1))
                 s.shownTexture = s.shownTexture == tex ? -1 : tex;
+            rememberControl(s, "Thumbnail " + targetName(plan, tex));
             ImGui::PopID();
             ImGui::TextDisabled("%s", targetName(plan, tex).c_str());
             ImGui::EndGroup();
         }
         ImGui::Checkbox("Before/after split", &s.compare);
+        rememberControl(s, "Before/after split");
         if (s.compare) {
             if (s.compareLeft == s.compareRight && !thumbnails.empty()) s.compareLeft = thumbnails.back().first;
-            targetCombo("left", plan, thumbnails, s.compareLeft);
-            targetCombo("right", plan, thumbnails, s.compareRight);
+            targetCombo(s, "left", plan, thumbnails, s.compareLeft);
+            targetCombo(s, "right", plan, thumbnails, s.compareRight);
             ImGui::SliderFloat("divider", &s.divider, 0.f, 1.f);
+            rememberControl(s, "divider", ImGui::CalcItemWidth());
             ImGui::TextDisabled("drag across the picture to move it");
         }
         ImGui::Checkbox("Probe (hover the picture)", &s.probe);
-        {  // where a test (or a tour) finds it, as the sliders
-            ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-            s.controlRects["Probe"] = {at.x, at.y, size.x, size.y};
-        }
+        rememberControl(s, "Probe");
         if (!s.probeText.empty()) ImGui::TextUnformatted(s.probeText.c_str());
         watchControls(s, asked);
 
@@ -369,8 +451,11 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
             s.drawing >= 0 ? fmt::format("drawing... {:.0f}% (last frame {:.1f} ms)###timings", 100.0 * s.drawing, s.lastFrameMs)
                            : fmt::format("frame {:.1f} ms, {} pass{}###timings", s.lastFrameMs, s.lastTimings.size(),
                                          s.lastTimings.size() == 1 ? "" : "es");
-        if (ImGui::TreeNode(timings.c_str())) {
+        const bool timingsOpen = ImGui::TreeNode(timings.c_str());
+        rememberControl(s, "Timings");
+        if (timingsOpen) {
             for (const auto& t : s.lastTimings) ImGui::Text("%s: %.2f ms", passName(plan, t.pass).c_str(), t.ms);
+            rememberControl(s, "Timings open");  // the last pass's line, shown
             ImGui::TreePop();
         }
         // A warning badge for any target holding NaN, Inf, negatives or
@@ -381,12 +466,8 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
             ImGui::TextWrapped("(!) %s: %zu NaN, %zu Inf, %zu negative, %zu above 65504", h.name.c_str(), h.health.nan,
                                h.health.inf, h.health.negative, h.health.above65504);
             ImGui::PopStyleColor();
-            if (!s.controlRects.count("Health")) {  // the first badge, for `where Health` (both shells show it)
-                const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-                s.controlRects["Health"] = {at.x, at.y, size.x, size.y};
-            }
+            if (!s.controlRects.count("Health")) rememberControl(s, "Health");  // the first badge, for `where Health`
         }
-        controls(s);
     }
     if (!s.status.empty()) ImGui::TextDisabled("%s", s.status.c_str());
     ImGui::PopTextWrapPos();

@@ -4,10 +4,12 @@
 // ImGui window the panel draws into, and renders ImGui's draw lists with
 // its backend (Dear ImGui's own line between core and imgui_impl_*).
 #pragma once
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "pipeline/watch_picture.h"
 #include "view/viewer_state.h"
 
 namespace glimmer {
@@ -27,6 +29,18 @@ std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<i
 // it measured, for the front end's layout (view/view_model.h layoutWindow).
 std::vector<ViewCommand> drawPanelWindow(ViewerState& s, float x, float height, int& width, int& contentHeight);
 
+// Notes where the item ImGui drew last is, under `name` (ViewerState::
+// controlRects): what `where NAME` prints and what the panel tour
+// (tests/data/panel_tour.txt) clicks, in both shells. Every control of the
+// panel has a name; panel.cpp's comments say which. `frameWidth`: for a
+// slider, field or list, the width of its frame (the item's own rectangle
+// runs on over its label, where a click does nothing); 0: the whole item.
+void rememberControl(ViewerState& s, const std::string& name, float frameWidth = 0);
+// What the panel shows, as one line of `key=value` words (a space or '%' in
+// a value written %20 / %25): the answer to the `panel` command, which the
+// panel tour reads after each click in both shells. `range`: the watch's
+// fixed range (none: its own); `loads`: scripts loaded so far.
+std::string panelState(const ViewerState& s, const std::optional<WatchRange>& range, int loads);
 // The panel's text size at scale 1, in pixels (the "Show values" box's too).
 constexpr float kPanelFontPx = 15;
 

@@ -1,7 +1,9 @@
 #include "view/panel_watch.h"
+#include "view/panel.h"
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstring>
 
 #include <fmt/format.h>
@@ -9,12 +11,6 @@
 namespace glimmer {
 
 namespace {
-
-// Where the last item drawn is, under `name`, for tests that click it.
-void remember(ViewerState& s, const char* name) {
-    const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
-    s.controlRects[name] = {at.x, at.y, size.x, size.y};
-}
 
 ViewCommand watchCommand(std::string text, bool range = false) {
     ViewCommand c;
@@ -36,18 +32,24 @@ void watchControls(ViewerState& s, std::vector<ViewCommand>& asked) {
         shown = s.watchSpec;
     }
     const float em = ImGui::GetFontSize();
-    ImGui::SetNextItemWidth(em * 14);
+    // The field takes what the row has left beside its buttons (14 em at
+    // most), so Watch and Stop are never cut at the panel's edge.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    auto buttonW = [&](const char* label) { return ImGui::CalcTextSize(label).x + style.FramePadding.x * 2 + style.ItemSpacing.x; };
+    const float buttons = buttonW("Watch") + (s.watch ? buttonW("Stop") : 0.f);
+    const float fieldW = std::clamp(ImGui::GetContentRegionAvail().x - buttons, em * 6, em * 14);
+    ImGui::SetNextItemWidth(fieldW);
     bool enter = ImGui::InputTextWithHint("##watch", "watch: bloom.frag:12 rgbblur", field, sizeof field,
                                           ImGuiInputTextFlags_EnterReturnsTrue);
-    remember(s, "Watch");
+    rememberControl(s, "Watch", fieldW);
     ImGui::SameLine();
     const bool watch = ImGui::Button("Watch");
-    remember(s, "Watch button");
+    rememberControl(s, "Watch button");
     if (watch || enter) asked.push_back(watchCommand(field));
     if (s.watch) {
         ImGui::SameLine();
         if (ImGui::Button("Stop")) asked.push_back(watchCommand("off"));
-        remember(s, "Stop");
+        rememberControl(s, "Stop");
     }
     // Idle, the field is all (its hint says what to type): one line of the
     // panel, so the sliders stay where the projector shows them.
@@ -70,21 +72,30 @@ void watchControls(ViewerState& s, std::vector<ViewCommand>& asked) {
     static float range[2] = {0.f, 1.f};
     ImGui::SetNextItemWidth(em * 8);
     ImGui::InputFloat2("##range", range, "%.3g");
-    remember(s, "Watch range");
+    rememberControl(s, "Watch range", em * 8);
     ImGui::SameLine();
     if (ImGui::Button("Fix range") && range[0] < range[1])
         asked.push_back(watchCommand(fmt::format("{},{}", range[0], range[1]), true));
-    remember(s, "Fix range");
+    rememberControl(s, "Fix range");
     ImGui::SameLine();
     if (ImGui::Button("Own range")) asked.push_back(watchCommand("auto", true));
-    remember(s, "Own range");
+    rememberControl(s, "Own range");
     // The marker colours, so a checker in the picture can be read.
+    // As many to a row as the panel's width holds: none cut at its edge.
+    const float room = ImGui::GetContentRegionAvail().x;
+    float used = 0;
     for (const WatchMarker& m : kWatchMarkers) {
+        const float w = em * 1.05f + ImGui::CalcTextSize(m.name).x;
+        if (used > 0 && used + style.ItemSpacing.x + w <= room) {
+            ImGui::SameLine();
+            used += style.ItemSpacing.x + w;
+        } else {
+            used = w;
+        }
         ImGui::ColorButton(m.name, ImVec4(m.r / 255.f, m.g / 255.f, m.b / 255.f, 1.f), ImGuiColorEditFlags_NoTooltip,
                            ImVec2(em * 0.8f, em * 0.8f));
         ImGui::SameLine(0, em * 0.25f);
         ImGui::TextDisabled("%s", m.name);
-        if (&m != &kWatchMarkers[2] && &m != &kWatchMarkers[5]) ImGui::SameLine();
     }
 }
 

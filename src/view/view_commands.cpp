@@ -152,6 +152,9 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
     } else if (word == "help") {
         if (!want(0, "help")) return std::nullopt;
         c.kind = ViewCommand::Kind::Help;
+    } else if (word == "panel") {
+        if (!want(0, "panel")) return std::nullopt;
+        c.kind = ViewCommand::Kind::Panel;
     } else if (word == "frames") {
         if (!want(0, "frames")) return std::nullopt;
         c.kind = ViewCommand::Kind::Frames;
@@ -159,7 +162,7 @@ std::optional<ViewCommand> parseViewCommand(const std::string& line, std::string
         if (!want(0, "quit")) return std::nullopt;
         c.kind = ViewCommand::Kind::Quit;
     } else {
-        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, watch, where, scale, help, frames, quit)";
+        error = "unknown command '" + word + "' (set, reload, save, show, values, probe, split, watch, where, panel, scale, help, frames, quit)";
         return std::nullopt;
     }
     return c;

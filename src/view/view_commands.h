@@ -8,7 +8,7 @@
 namespace glimmer {
 
 struct ViewCommand {
-    enum class Kind { Set, Reload, Save, Show, Values, Probe, Split, Watch, Where, Scale, Help, Frames, Quit };
+    enum class Kind { Set, Reload, Save, Show, Values, Probe, Split, Watch, Where, Panel, Scale, Help, Frames, Quit };
     Kind kind = Kind::Quit;
     std::string name;   // Set: the uniform; Save: the file; Where: the panel's control
     double value = 0;   // Set: the first number; Scale: the scale
@@ -19,8 +19,8 @@ struct ViewCommand {
     bool on = true;     // Values, Probe, Split: on or off
     bool report = false;  // Probe with no argument or at X Y: print what the probe reads
     int x = -1, y = -1;   // Probe X Y: that pixel of the picture (top row 0), not the pointer's
-    // It only prints (help, frames, where): the viewer does not count it as the user at work.
-    bool onlyAsks() const { return kind == Kind::Help || kind == Kind::Frames || kind == Kind::Where; }
+    // It only prints (help, frames, where, panel): the viewer does not count it as the user at work.
+    bool onlyAsks() const { return kind == Kind::Help || kind == Kind::Frames || kind == Kind::Where || kind == Kind::Panel; }
 };
 
 // Parses one command; nullopt and `error` for anything else. Blank lines

@@ -120,6 +120,7 @@ std::string helpText() {
            "  watch range LO,HI|auto   the watch's values shown black to white; auto: their own range\n"
            "  watch off          back to the picture\n"
            "  where CONTROL      prints where the panel's control is: X Y W H in window pixels\n"
+           "  panel              prints what the panel shows: its switches, the watch and every value\n"
            "  scale S            the panel's text and controls at S (0.5 to 4), as --ui-scale\n"
            "  help               print this list\n"
            "  frames             print frame times since the last 'frames' and the last picture's time\n"

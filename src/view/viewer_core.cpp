@@ -58,6 +58,7 @@ bool ViewerCore::prepareAt(int w, int h, LoadedScript& next, std::unique_ptr<Ren
 bool ViewerCore::load(int w, int h, Diagnostics& diags, SourceTexts& sources, Plan* plan, const std::string& why) {
     LoadedScript next;
     std::unique_ptr<Renderer> renderer;
+    ++loads_;
     prepareAt(w, h, next, renderer, diags);
     keepMessages(s_, diags, next.sources);
     if (source_.oneLineMessages)
@@ -297,6 +298,11 @@ bool ViewerCore::apply(const ViewCommand& c, std::string& said) {
                                  it->second[3]);
         return true;
     }
+    case ViewCommand::Kind::Panel:
+        // The picture's hash is the last frame's that was asked for; the next frame hashes again.
+        said = panelState(s_, watchRange_, loads_) + fmt::format(" picture={:016x}", pictureHash_);
+        pictureHashWanted_ = true;
+        return true;
     case ViewCommand::Kind::Split:
         if (c.on && textureOnUnit("split", c.unit, s_.compareLeft, said) &&
             textureOnUnit("split", c.right, s_.compareRight, said))

@@ -292,6 +292,9 @@ private:
     } watchProbe_;
     std::optional<WatchRange> watchRange_;  // `watch range LO,HI`; none: the values' own
     bool watchStale_ = false;               // a watch set up or its range changed: draw it again
+    int loads_ = 0;                         // loads so far (the `panel` command says it: Reload's effect)
+    bool pictureHashWanted_ = false;        // `panel` asked: hash the picture as the next frame shows it
+    std::uint64_t pictureHash_ = 0;         // what `panel` says as picture= (WindowFrame::hashRegion)
 };
 
 }  // namespace glimmer

@@ -56,15 +56,22 @@ void ViewerCore::frame(const FrameGeometry& g, ViewerHost& host) {
 
     std::vector<ViewCommand> asked;
     if (s_.panelShown) {
+        s_.panelMaxW = g.panelMaxW;
         if (g.panelMaxW > 0)
             ImGui::SetNextWindowSizeConstraints(ImVec2(0.f, 0.f), ImVec2(g.panelMaxW, std::numeric_limits<float>::max()));
         asked = drawPanelWindow(s_, g.panelX, float(g.windowH), panelW_, panelH_);
     }
+    // The picture too has a place a tour can find (`where Picture`): a drag there turns the scene.
+    s_.controlRects["Picture"] = {float(g.pictureX), float(g.pictureY), float(g.pictureW), float(g.pictureH)};
     drawValues();
     ImGui::Render();
     if (windowFrame_) windowFrame_->begin(g.windowW, g.windowH, 0.12f, 0.12f, 0.14f);
     presentPicture(s_, g.windowH, g.pictureX, g.pictureY, g.pictureW, g.pictureH);
     ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    if (pictureHashWanted_ && windowFrame_) {  // asked by `panel`: the picture as shown, the values box on it
+        pictureHash_ = windowFrame_->hashRegion(g.pictureX, g.pictureY, g.pictureW, g.pictureH, g.windowH);
+        pictureHashWanted_ = false;
+    }
     noteFrame();
 
     // What the panel's buttons and the keys asked, after the frame is shown.

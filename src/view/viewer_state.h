@@ -74,6 +74,7 @@ struct ViewerState {
     // Where each uniform's control was drawn in the last frame (x, y, w, h
     // in window pixels): what a test or a script clicks (web_view.cpp).
     std::map<std::string, std::array<float, 4>> controlRects;
+    float panelMaxW = 0;  // > 0: the shell pins the panel's width (the page): text wraps inside it
 
     // glman's mouse: drag to turn the scene, scroll to zoom; kept out of the
     // script's ModelView matrix (see Renderer::setSceneTransform).

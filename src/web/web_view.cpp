@@ -24,6 +24,7 @@
 //       messages and files): web_view_queries.cpp.
 // The panel's width is pinned once measured, so messages never widen it.
 // Input (web_view_input.cpp) comes from the canvas's own events.
+#include <algorithm>
 #include <backends/imgui_impl_opengl3.h>
 #include <emscripten/emscripten.h>
 #include <imgui.h>
@@ -224,6 +225,11 @@ EMSCRIPTEN_KEEPALIVE int glimmer_view_frame(double seconds) {
     v.core.frame(g, v);
     if (v.pinnedPanelW == 0 && v.s.good && !v.s.failed && ++v.calmFrames >= 3) v.pinnedPanelW = v.core.panelWidth();
     return v.asks;
+}
+
+// The height the page has for the canvas; the panel scrolls inside it.
+EMSCRIPTEN_KEEPALIVE void glimmer_view_fit_height(int height) {
+    if (viewer) viewer->fitHeight = std::clamp(height, 1, 8192);
 }
 
 EMSCRIPTEN_KEEPALIVE int glimmer_view_width() { return viewer ? viewer->layout().windowW : 0; }

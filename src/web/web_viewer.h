@@ -53,13 +53,18 @@ struct WebViewer : ViewerHost {
     // page shows it whole, wrapped, and marks it in its editor) instead of
     // widening the canvas and pushing the page's editor aside. 0: not yet.
     int pinnedPanelW = 0;
+    // The canvas at most this tall (never below the picture): the page's
+    // visible height for it (glimmer_view_fit_height), so a long panel
+    // scrolls inside itself and the picture, the verdict and the first
+    // error stay in the window (issue 39).
+    int fitHeight = 8192;
     float pinnedFontPx = 0;
     int calmFrames = 0;
 
     int shownW() const { return int(std::lround(width * pageScale())); }
     int shownH() const { return int(std::lround(height * pageScale())); }
     WindowLayout layout() const {
-        return glimmer::layoutWindow(shownW(), shownH(), true, core.panelWidth(), core.panelHeight(), 8192);
+        return glimmer::layoutWindow(shownW(), shownH(), true, core.panelWidth(), core.panelHeight(), fitHeight);
     }
 
     // ViewerHost (web_view.cpp)

@@ -67,7 +67,7 @@ TEST(ViewCommands, ParsesEveryCommand) {
 TEST(ViewCommands, ErrorsSayWhatIsWrong) {
     std::string err;
     EXPECT_FALSE(parseViewCommand("jump", err));
-    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, values, probe, split, watch, where, scale, help, frames, quit)");
+    EXPECT_EQ(err, "unknown command 'jump' (set, reload, save, show, values, probe, split, watch, where, panel, scale, help, frames, quit)");
     EXPECT_FALSE(parseViewCommand("watch   ", err));
     EXPECT_EQ(err, "usage: watch FILE:LINE EXPRESSION, watch off, or watch range LO,HI|auto");
     EXPECT_FALSE(parseViewCommand("set uAdd", err));
@@ -119,6 +119,16 @@ TEST(ViewCommands, WhereTakesAControlsNameWithItsSpaces) {
     EXPECT_TRUE(where->onlyAsks());
     EXPECT_FALSE(parseViewCommand("where", err));
     EXPECT_EQ(err, "usage: where CONTROL (a slider's uniform, Watch, Watch button, Stop, Fix range, Own range, Probe)");
+}
+
+TEST(ViewCommands, PanelOnlyAsksAndTakesNoArgument) {
+    std::string err;
+    auto panel = parseViewCommand("panel", err);
+    ASSERT_TRUE(panel) << err;
+    EXPECT_EQ(panel->kind, ViewCommand::Kind::Panel);
+    EXPECT_TRUE(panel->onlyAsks());  // asking is not the user at work: the idle viewer stays idle
+    EXPECT_FALSE(parseViewCommand("panel all", err));
+    EXPECT_EQ(err, "usage: panel");
 }
 
 }  // namespace

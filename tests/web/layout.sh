@@ -11,6 +11,13 @@
 # picture and the sliders larger, still in the window, and leaving it
 # gives the page back as it was. With GLIMMER_LAYOUT_SHOTS=DIR the
 # screenshots (WxH-open.png, -broken.png, -present.png) are kept in DIR.
+# Then the same sizes as real windows (issue 39: the outer size, so the page
+# gets what is left once the browser's bars are drawn) in Chromium, Firefox
+# ESR and WebKitGTK (tools/page-engine.mjs --layout=WxH,
+# tools/page-window-layout.mjs): the picture, the sliders and the verdict in
+# the window when opened, with a watch on (the panel at its longest: it
+# scrolls inside itself) and with an error showing (the panel's error line
+# wrapped, not cut), and the watch's buttons not cut at the panel's edge.
 # Usage: tests/web/layout.sh [DESKTOP_GLIMMER] [WEB_BUILD_DIR]
 #        (the module built already; tests/web/page_lib.sh says what is shared)
 source "$(dirname "$0")/page_lib.sh"
@@ -65,6 +72,57 @@ for size in "${sizes[@]}"; do
      and present["sliders"]["uAdd"]["height"] > 1.1 * open["sliders"]["uAdd"]["height"]'
   check_layout "leaving the presentation mode must give the page back as it was" "$size" \
     'same(after["canvas"], open["canvas"], ["left", "top", "width", "height"]) and same(after["editor"], open["editor"], ["left", "top", "width"])'
+done
+
+# Real windows, each engine (WebKit over HTTP: it reads nothing beside a
+# page opened from disk).
+source "$(dirname "$0")/engine_lib.sh"
+need_engine Xvfb tools/node_modules/puppeteer-core firefox-esr WebKitWebDriver
+serve "$web/src/web"
+check_window() {  # DESCRIPTION PYTHON-CONDITION
+  python3 - "$window_json" "$2" <<'PY' 2>/dev/null
+import json, sys
+r = json.loads(sys.argv[1])
+def inside(x, at):
+    w, h = at["viewport"]
+    return x is not None and x["left"] >= -0.5 and x["top"] >= -0.5 and x["right"] <= w + 0.5 and x["bottom"] <= h + 0.5
+def within(x, box):  # not cut at box's right edge
+    return x is not None and x["right"] <= box["right"] + 0.5
+sys.exit(0 if eval("(" + sys.argv[2] + ")", {"inside": inside, "within": within, "r": r}) else 1)
+PY
+  tally $? "$engine $size window: $1: $(python3 -c '
+import json, sys
+r = json.loads(sys.argv[1])
+for k in ("open", "watching", "broken"):
+    m = r.get(k) or {}
+    print(" ", k, json.dumps({x: m.get(x) for x in ("viewport", "outer", "scroll", "canvas", "controls", "verdict", "verdictText", "errors")}))
+print(" ", r.get("failed", ""))' "$window_json" 2>/dev/null || cut -c1-1500 <<<"$window_json")"
+}
+for engine in chromium firefox webkit; do
+  url="file://$page"
+  [ "$engine" = webkit ] && url="http://127.0.0.1:$served_port/index.html"
+  for size in "${sizes[@]}"; do
+    echo "  a real $size window in $engine"
+    mkdir -p "$pictures/window-$engine"
+    window_json="$(with_x timeout 150 node tools/page-engine.mjs "$engine" "$url" "$pictures/window-$engine" "--layout=$size" \
+                   2>"$pictures/window-$engine/stderr" | tail -1)"
+    [ -n "${GLIMMER_LAYOUT_SHOTS:-}" ] && cp "$pictures/window-$engine"/*.png "$GLIMMER_LAYOUT_SHOTS/" 2>/dev/null
+    w="${size%x*}" h="${size#*x}"
+    check_window "the window's outer size must be $size (a real window, not a viewport)" \
+      "'failed' not in r and abs(r['open']['outer'][0] - $w) <= 2 and abs(r['open']['outer'][1] - $h) <= 2"
+    check_window "opened: the picture, the sliders uHalfSize and uAdd and the verdict must be in the window" \
+      "all(inside(r['open'][k], r['open']) for k in ('canvas', 'verdict')) and inside(r['open']['controls']['uAdd'], r['open'])
+       and inside(r['open']['controls']['uHalfSize'], r['open']) and r['open']['verdictText'] == 'scripts/bloom.glib: drawn'"
+    check_window "with a watch on: the picture, both sliders and the verdict still in the window; Watch, Stop and Own range not cut at the panel's edge" \
+      "r['watching']['said'].startswith('watch bloom.frag:12 rgbblur') and all(inside(r['watching'][k], r['watching']) for k in ('canvas', 'verdict'))
+       and inside(r['watching']['controls']['uAdd'], r['watching']) and inside(r['watching']['controls']['uHalfSize'], r['watching'])
+       and all(within(r['watching']['controls'][k], r['watching']['canvas']) for k in ('Watch button', 'Stop', 'Own range'))"
+    check_window "with an error: the picture, both sliders, the verdict and the panel's error line (wrapped, not cut) in the window" \
+      "r['broken']['errors'] == 1 and all(inside(r['broken'][k], r['broken']) for k in ('canvas', 'verdict'))
+       and inside(r['broken']['controls']['Error 1'], r['broken']) and within(r['broken']['controls']['Error 1'], r['broken']['canvas'])
+       and r['broken']['controls']['Error 1']['height'] > 20 and inside(r['broken']['controls']['uAdd'], r['broken'])
+       and inside(r['broken']['controls']['uHalfSize'], r['broken']) and r['broken']['verdictText'] == 'scripts/bloom.glib: errors'"
+  done
 done
 
 finish

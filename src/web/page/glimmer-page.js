@@ -46,6 +46,9 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
   const shown = document.getElementById("diagnostics");
   const canvas = document.getElementById("canvas");
   const picture = document.getElementById("picture");
+  // A right click over the panel is ImGui's (a merged slider's "Split per
+  // pass"): the browser's own menu would take the release (WebKit's does).
+  canvas.addEventListener("contextmenu", (e) => e.preventDefault());
 
   // Every .glib under a root, as its path below it ("scripts/bloom.glib").
   const scriptsUnder = (root) => {
@@ -271,9 +274,37 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     for (const old of Object.keys(state.values).slice(0, -50)) delete state.values[old];
     keepState();
   };
+  // The canvas no taller than what the page shows of its column, less the
+  // verdict and the start of the first error below it: a long panel (a
+  // watch on, many Programs) scrolls inside itself, and the picture, the
+  // verdict and the error stay in the window (issue 39). Not where the
+  // column grows with its content (a small screen's stacked layout) or in
+  // the presentation mode, which fits the canvas by scaling it.
+  const view = document.getElementById("view");
+  // Where even the picture is taller than that (a 720-pixel laptop
+  // screen's Chromium leaves the column about 500), the canvas is drawn
+  // smaller to fit, to 60% at the least; the input maps back by its box.
+  let lastFit = -1e9, shrink = 1;
+  const fitCanvas = (now) => {
+    if (now - lastFit < 250) return;
+    lastFit = now;
+    let fit = 8192, want = 1;
+    if (getComputedStyle(view).overflowY !== "visible" && !document.body.classList.contains("present")) {
+      const ratio = window.devicePixelRatio || 1;
+      const lineH = parseFloat(getComputedStyle(verdict).lineHeight) || 20;
+      const below = verdict.offsetHeight + lineH * 0.6 + Math.min(firstError.offsetHeight, lineH * 4);
+      const room = view.clientHeight - below;
+      fit = Math.floor(room * ratio);
+      const tall = glimmer._glimmer_view_height() / ratio;
+      if (room > 0 && tall > room) want = Math.max(0.6, room / tall);
+    }
+    glimmer._glimmer_view_fit_height(Math.max(64, fit));
+    if (Math.abs(want - shrink) > 0.005) { shrink = want; if (canvas.width) styleCanvas(); }
+  };
   let lastTick = 0;
   const tick = (now) => {
     if (!live) return;
+    fitCanvas(now);
     const asked = glimmer._glimmer_view_frame(lastTick ? (now - lastTick) / 1000 : 0);
     lastTick = now;
     // The layout's size for the next frame (resizing clears the canvas).
@@ -288,12 +319,15 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
   // CSS pixels: the same size at every devicePixelRatio (the input maps
   // back, web_view_input.cpp).
   let scaled = false;
-  const sizeCanvas = (w, h) => {
+  const styleCanvas = () => {
     const ratio = window.devicePixelRatio || 1;
+    canvas.style.width = canvas.width / ratio * shrink + "px";
+    canvas.style.height = canvas.height / ratio * shrink + "px";
+  };
+  const sizeCanvas = (w, h) => {
     canvas.width = w;
     canvas.height = h;
-    canvas.style.width = w / ratio + "px";
-    canvas.style.height = h / ratio + "px";
+    styleCanvas();
   };
   // `values`: sets kept from an earlier visit ("NAME=V;..."), each given back
   // through glimmer_view_set before the first frame (one the script no
@@ -324,6 +358,8 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     // on the page, the panel's text rasterised at that scale, not stretched.
     if (!scaled && (window.devicePixelRatio || 1) !== 1) viewCommand("scale " + Math.min(4, Math.max(0.5, window.devicePixelRatio)));
     scaled = true;
+    lastFit = -1e9;
+    fitCanvas(performance.now());
     glimmer._glimmer_view_frame(0);  // the first picture, then the canvas at the layout's size
     sizeCanvas(glimmer._glimmer_view_width(), glimmer._glimmer_view_height());
     glimmer._glimmer_view_frame(0);
