@@ -7,6 +7,7 @@
 #include <cstring>
 
 #include "gl/shader_build.h"
+#include "shader/missing_semicolon.h"
 #include "shader/glsl_scan.h"
 
 namespace glimmer {
@@ -114,6 +115,16 @@ void mapCompilerLog(const std::string& log, const PreparedSource& src, const std
             d.loc = {src.originalLine(ln), 0};
         } else {
             if (line.find_first_not_of(" \t") != std::string::npos) unmatched += (unmatched.empty() ? "" : "\n") + line;
+            continue;
+        }
+        // A ';' missing at the end of the line before: marked there, the
+        // driver's place a note (shader/missing_semicolon.h). Found in the
+        // compiled text, then mapped back past the lines Glimmer inserted.
+        if (auto missing = missingSemicolonAt(d.message, src.text, ln)) {
+            const SourceLoc next = d.loc;
+            d.loc = {src.originalLine(missing->line), missing->col};
+            diags.add(d);
+            diags.add({Severity::Note, file, next, "the next statement starts here", false});  // ours, never folded away
             continue;
         }
         diags.add(d);

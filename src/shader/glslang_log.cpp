@@ -1,4 +1,5 @@
 #include "shader/glslang_log.h"
+#include "shader/missing_semicolon.h"
 
 #include <cctype>
 #include <climits>
@@ -145,7 +146,11 @@ int mapGlslangLog(std::string_view log, const GlslangLogContext& cx, Diagnostics
         std::string_view token = quotedToken(msg);
         if (token.rfind("gl_", 0) == 0 && msg.find("undeclared identifier") != std::string_view::npos)
             text += " (a compatibility-profile built-in that WebGL 2 has no stand-in for)";
-        diags.add({sev, cx.file, loc, std::move(text)});
+        // A ';' missing at the end of the line before: marked there, the
+        // next statement's start a note (shader/missing_semicolon.h).
+        const auto missing = loc.line ? missingSemicolonAt(msg, cx.userText, loc.line) : std::nullopt;
+        diags.add({sev, cx.file, missing ? *missing : loc, std::move(text)});
+        if (missing) diags.note(cx.file, loc, "the next statement starts here");
         errors += sev == Severity::Error;
     }
     return errors;
