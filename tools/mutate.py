@@ -24,6 +24,7 @@ Usage:
   tools/mutate.py --snapshot DIR --listed     # the behaviours issue 26 lists
   tools/mutate.py --snapshot DIR --match grade --report mutation.md
   tools/mutate.py --snapshot DIR --prepare    # copy and build only (to work on the tests)
+  tools/mutate.py --sample 200 --seed 40 --um ~/universalmutator   # sampled mutants (issue 40)
 
 --build DIR mutates the source tree DIR was configured from (read from its
 CMakeCache.txt), in place: while a mutant is in, anyone building or
@@ -255,7 +256,18 @@ def main():
     ap.add_argument("--prepare", action="store_true",
                     help="copy the snapshot (with --snapshot), build the selection's test programs, and stop")
     ap.add_argument("--no-baseline", action="store_true", help="skip the run on the unchanged source (not advised)")
+    sample = ap.add_argument_group("sampled mutants (issue 40; tools/mutate_sample.py says how)")
+    sample.add_argument("--sample", type=int, metavar="N",
+                        help="draw mutants with universalmutator until N compiled, non-equivalent ones ran "
+                             "(with --snapshot DIR, default build-mut/sample); resumable")
+    sample.add_argument("--seed", type=int, default=40, help="the sample's seed (default 40)")
+    sample.add_argument("--um", help="universalmutator's source tree, when it is not installed")
+    sample.add_argument("--sample-reset", action="store_true", help="forget the campaign's results and start over")
+    sample.add_argument("--sample-report-only", action="store_true", help="print the campaign's score and stop")
     args = ap.parse_args()
+    if args.sample is not None:
+        import mutate_sample
+        return mutate_sample.main(args)
 
     mutants = MUTANTS
     ids = [m.id for m in MUTANTS]

@@ -317,13 +317,16 @@ TEST_F(PlanTest, SameFileSharesOneTexture) {
 }
 
 TEST_F(PlanTest, TextureArgumentErrors) {
-    Planned p = run("Texture2D 32 img.bmp\nTexture2D 1.5 img.bmp\nTexture2D 1 0 10\nTexture2D\nTexture2D 1 2\n");
+    // (The last line: a unit below 0, which issue 40's sampled mutants found untested.)
+    Planned p = run("Texture2D 32 img.bmp\nTexture2D 1.5 img.bmp\nTexture2D 1 0 10\nTexture2D\nTexture2D 1 2\n"
+                    "Texture2D -1 img.bmp\n");
     EXPECT_EQ(messages(p.diags),
               (V{"1:11: error: Texture2D needs a texture unit from 0 to 31, not '32'",
                  "2:11: error: Texture2D needs a texture unit from 0 to 31, not '1.5'",
                  "3:13: error: a texture's size must be between 1 and 16384 each way",
                  "4:1: error: Texture2D needs a unit and a file, or a unit, a width and a height",
-                 "5:1: error: Texture2D needs a unit and a file, or a unit, a width and a height"}));
+                 "5:1: error: Texture2D needs a unit and a file, or a unit, a width and a height",
+                 "6:11: error: Texture2D needs a texture unit from 0 to 31, not '-1'"}));
     EXPECT_TRUE(p.plan.textures.empty());
 }
 

@@ -1,0 +1,354 @@
+"""Sampled mutants (issue 40): bugs nobody here chose, drawn from the code itself.
+
+tools/mutate.py's table holds mutants the test writers picked; this mode asks
+whether the tests catch bugs a rule-based tool writes. Contract:
+
+- The mutants: universalmutator's (Groce et al., github.com/agroce/universalmutator,
+  maintained) regular-expression rules for C++ (universal.rules, cpp.rules,
+  c_like.rules: the set its `mutate FILE cpp` uses), applied through its own
+  `mutator.mutants_regexp`, string-literal-only changes skipped (its default),
+  to every .cpp and .h of FOLDERS. Comment lines and #include lines are left
+  out before anything is built (they cannot change the program). We call the
+  library rather than its `mutate` command because that command builds each
+  mutant with a command of its own; here the build is CMake's, incremental.
+  universalmutator is not vendored: `--um DIR` names an installed or unpacked
+  copy (pip install universalmutator, or its source tree). Its `comby` mode
+  is not used, so a missing `comby` package is stood in for.
+- The sample: the pool sorted, shuffled with random.Random(SEED), walked in
+  that order until N mutants compiled and were not equivalent. Same seed and
+  same source: same sample. A mutant is "equivalent" when every object file
+  it rebuilt is byte-identical to the unmutated build's (trivial compiler
+  equivalence; the build has no debug info, so only code counts).
+- A mutant is "killed" when any test of the whole native suite fails: first
+  the test programs of its own folder (STAGE1, whole, no filter; a quick way
+  to a kill), then, if they pass, `ctest -LE browser` (every native test,
+  stopping at the first failure). "survived" means the whole suite passed.
+- Resumable: each decided mutant is a line of SNAP/sample-results.jsonl; a
+  run skips the ones already there. The source is the snapshot's, fixed for
+  the campaign (its commit is recorded; a different one stops the run
+  unless --sample-reset). Touch SNAP/PAUSE to pause between mutants.
+- Crash-safe: the mutated file's original text is journalled before the
+  write and put back by the next run.
+"""
+import glob
+import hashlib
+import json
+import os
+import random
+import re
+import shutil
+import subprocess
+import sys
+import time
+import types
+
+FOLDERS = ["plan", "shader", "gl", "grade", "process", "pipeline"]
+RULES = ["universal.rules", "cpp.rules", "c_like.rules"]
+# Each folder's own test programs: run whole before the full suite, because
+# they kill most mutants in seconds.
+STAGE1 = {"plan": ["test_plan"], "shader": ["test_shader"], "gl": ["test_shaderlog", "test_render"],
+          "grade": ["test_grade"], "process": ["test_render", "test_glman"], "pipeline": ["test_pipeline"]}
+RESULTS = "sample-results.jsonl"
+JOURNAL = ".sample-journal.json"
+
+
+def load_universalmutator(um_dir):
+    if um_dir:
+        sys.path.insert(0, os.path.abspath(um_dir))
+    try:
+        import comby  # noqa: F401  (only its comby mode needs it)
+    except ImportError:
+        stand_in = types.ModuleType("comby")
+        stand_in.Comby = None
+        sys.modules["comby"] = stand_in
+    try:
+        from universalmutator import mutator
+    except ImportError as e:
+        sys.exit(f"mutate: universalmutator is not importable ({e}); pip install universalmutator, "
+                 "or --um DIR with its source tree")
+    return mutator
+
+
+def skippable(line):
+    s = line.strip()
+    return (not s or s.startswith("//") or s.startswith("/*") or s.startswith("*") or s.startswith("#include")
+            or s.startswith("#pragma"))
+
+
+def pool(source, mutator):
+    """Every candidate mutant: (id, folder, file, line number, new line, rule)."""
+    out = []
+    quiet = open(os.devnull, "w")
+    for folder in FOLDERS:
+        files = sorted(glob.glob(os.path.join(source, "src", folder, "*.cpp")) +
+                       glob.glob(os.path.join(source, "src", folder, "*.h")))
+        for path in files:
+            rel = os.path.relpath(path, source)
+            with open(path, encoding="utf-8", newline="") as f:
+                lines = f.readlines()
+            stdout, sys.stdout = sys.stdout, quiet  # the library prints its rule list per file
+            try:
+                found = mutator.mutants_regexp(lines, ruleFiles=RULES, ignorePatterns=[], ignoreStringOnly=True)
+            finally:
+                sys.stdout = stdout
+            for lineno, new, rule, _ in found:
+                if skippable(lines[lineno - 1]):
+                    continue
+                digest = hashlib.sha1(new.encode()).hexdigest()[:8]
+                out.append((f"{rel}:{lineno}:{digest}", folder, rel, lineno, new, rule[0].strip()))
+    out.sort()
+    return out
+
+
+def objects(build):
+    """{object file: sha1} of every object in the build."""
+    found = {}
+    for root, _, files in os.walk(build):
+        for f in files:
+            if f.endswith(".o"):
+                p = os.path.join(root, f)
+                with open(p, "rb") as fh:
+                    found[p] = hashlib.sha1(fh.read()).hexdigest()
+    return found
+
+
+def run(cmd, cwd, log, timeout):
+    with open(log, "w") as out:
+        p = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            return p.wait(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(p.pid, 9)
+            p.wait()
+            return "timeout"
+        except BaseException:
+            try:
+                os.killpg(p.pid, 9)
+            except ProcessLookupError:
+                pass
+            p.wait()
+            raise
+
+
+def tail(log, n=6):
+    with open(log, errors="replace") as f:
+        return " | ".join(l.strip() for l in f.read().splitlines()[-n:] if l.strip())[:400]
+
+
+def failed_ctest(log):
+    with open(log, errors="replace") as f:
+        text = f.read()
+    names = re.findall(r"^\s*\d+ - (\S+) \(", text, re.M)
+    return ", ".join(names[:5]) or tail(log, 3)
+
+
+def compile_commands(build):
+    """{source file: (directory, command)} from CMake's compile_commands.json."""
+    with open(os.path.join(build, "compile_commands.json"), encoding="utf-8") as f:
+        return {os.path.realpath(e["file"]): (e["directory"], e["command"]) for e in json.load(f)}
+
+
+def quick_compile(path, build, commands, log):
+    """The one translation unit first: a mutant that does not compile is told
+    in seconds, without make walking the tree. For a header, a file that
+    includes it, checked for syntax only. True when it compiles."""
+    path = os.path.realpath(path)
+    if path.endswith(".cpp"):
+        entry = commands.get(path)
+        if not entry:
+            return True
+        return run(["sh", "-c", entry[1]], entry[0], log, 600) == 0
+    header = os.path.relpath(path, os.path.join(os.path.dirname(os.path.dirname(path))))
+    sibling = path[:-2] + ".cpp"
+    users = [sibling] if sibling in commands else [f for f in commands if f.endswith(".cpp") and
+                                                    f'#include "{header}"' in open(f, errors="replace").read()]
+    if not users:
+        return True
+    directory, command = commands[users[0]]
+    return run(["sh", "-c", re.sub(r" -o \S+", " -o /dev/null", command) + " -fsyntax-only"], directory, log, 600) == 0
+
+
+def git_head(source):
+    r = subprocess.run(["git", "-C", os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
+                        "rev-parse", "HEAD"], capture_output=True, text=True)
+    return r.stdout.strip()
+
+
+def configure(snap, source):
+    build = os.path.join(snap, "build")
+    if not os.path.exists(os.path.join(build, "CMakeCache.txt")):
+        # -O1 and no debug info: quicker builds and links, and object files
+        # that differ only when the code does (the equivalence test above).
+        subprocess.run(["cmake", "-S", source, "-B", build, "-DCMAKE_BUILD_TYPE=RelWithDebInfo",
+                        "-DCMAKE_CXX_FLAGS_RELWITHDEBINFO=-O1 -DNDEBUG", "-DCMAKE_C_FLAGS_RELWITHDEBINFO=-O1 -DNDEBUG",
+                        "-DGLIMMER_TESTS=ON"], check=True, stdout=subprocess.DEVNULL)
+    return build
+
+
+def recover(snap):
+    j = os.path.join(snap, JOURNAL)
+    if os.path.exists(j):
+        with open(j, encoding="utf-8") as f:
+            entry = json.load(f)
+        with open(entry["path"], "w", encoding="utf-8", newline="") as f:
+            f.write(entry["file"])
+        os.remove(j)
+        print(f"mutate: put back {entry['path']}, left mutated by an earlier run", flush=True)
+
+
+def decided(snap):
+    path = os.path.join(snap, RESULTS)
+    out = {}
+    if os.path.exists(path):
+        with open(path, encoding="utf-8") as f:
+            for line in f:
+                if line.strip():
+                    r = json.loads(line)
+                    out[r["id"]] = r
+    return out
+
+
+def report(snap, results, seed, want, out=None):
+    rows = list(results.values())
+    counted = [r for r in rows if r["result"] in ("killed", "survived")]
+    lines = [f"Sampled mutants (seed {seed}, {len(counted)} of the {want} wanted counted; "
+             f"{sum(r['result'] == 'no compile' for r in rows)} did not compile, "
+             f"{sum(r['result'] == 'equivalent' for r in rows)} equivalent by object code):", "",
+             "| folder | counted | killed | survived | score |", "|---|---|---|---|---|"]
+    for folder in FOLDERS:
+        c = [r for r in counted if r["folder"] == folder]
+        k = sum(r["result"] == "killed" for r in c)
+        lines.append(f"| src/{folder} | {len(c)} | {k} | {len(c) - k} | "
+                     f"{(100 * k / len(c)):.0f}% |" if c else f"| src/{folder} | 0 | | | |")
+    survivors = [r for r in counted if r["result"] == "survived"]
+    if survivors:
+        lines += ["", "Survivors:", ""]
+        for r in sorted(survivors, key=lambda r: r["id"]):
+            lines.append(f"- `{r['file']}:{r['line']}`: `{r['was'].strip()}` -> `{r['new'].strip()}`")
+    text = "\n".join(lines) + "\n"
+    print(text)
+    if out:
+        with open(out, "w", encoding="utf-8") as f:
+            f.write(text)
+
+
+def main(args):
+    snap = os.path.abspath(args.snapshot or os.path.join("build-mut", "sample"))
+    from mutate import sync_snapshot  # the copy of the working tree, as the table's mode makes it
+    results = decided(snap)
+    if args.sample_report_only:
+        report(snap, results, args.seed, args.sample, args.report)
+        return 0
+    head = git_head(snap)
+    meta_path = os.path.join(snap, "sample-source.json")
+    if os.path.exists(meta_path) and results and not args.sample_reset:
+        with open(meta_path) as f:
+            meta = json.load(f)
+        if meta.get("seed") != args.seed:
+            sys.exit(f"mutate: this campaign's seed is {meta.get('seed')}; --sample-reset to start over")
+        source = os.path.join(snap, "src")  # the campaign's fixed copy, not re-synced
+    else:
+        if args.sample_reset and os.path.exists(os.path.join(snap, RESULTS)):
+            os.remove(os.path.join(snap, RESULTS))
+            results = {}
+        source = sync_snapshot(snap)
+        os.makedirs(snap, exist_ok=True)
+        with open(meta_path, "w") as f:
+            json.dump({"seed": args.seed, "commit": head, "started": time.strftime("%Y-%m-%d %H:%M")}, f)
+    recover(snap)
+    build = configure(snap, source)
+    logs = os.path.join(snap, "logs")
+    os.makedirs(logs, exist_ok=True)
+    mutator = load_universalmutator(args.um)
+    candidates = pool(source, mutator)
+    order = candidates[:]
+    random.Random(args.seed).shuffle(order)
+    print(f"mutate: {len(candidates)} candidate mutants in {', '.join('src/' + f for f in FOLDERS)}; "
+          f"seed {args.seed}; {len(results)} decided already", flush=True)
+
+    print("mutate: building the unmutated snapshot", flush=True)
+    if run(["cmake", "--build", build, "-j", str(args.jobs)], build, os.path.join(logs, "baseline-build.log"), None) != 0:
+        sys.exit(f"mutate: the unmutated snapshot does not build: {logs}/baseline-build.log")
+    baseline_dir = os.path.join(snap, "baseline-objects")
+    base = objects(build)
+    if not args.no_baseline and not results:
+        rc = run(["ctest", "--test-dir", build, "-LE", "browser", "-j", str(args.jobs), "--timeout", "600"], build,
+                 os.path.join(logs, "baseline-ctest.log"), None)
+        if rc != 0:
+            sys.exit(f"mutate: the native suite fails unmutated ({failed_ctest(os.path.join(logs, 'baseline-ctest.log'))}); "
+                     "nothing mutated")
+    shutil.rmtree(baseline_dir, ignore_errors=True)
+    for p in base:
+        d = os.path.join(baseline_dir, os.path.relpath(p, build))
+        os.makedirs(os.path.dirname(d), exist_ok=True)
+        shutil.copy2(p, d)
+
+    commands = compile_commands(build)
+    counted = sum(r["result"] in ("killed", "survived") for r in results.values())
+    out = open(os.path.join(snap, RESULTS), "a", encoding="utf-8")
+    for cand in order:
+        if counted >= args.sample:
+            break
+        mid, folder, rel, lineno, new, rule = cand
+        if mid in results:
+            continue
+        while os.path.exists(os.path.join(snap, "PAUSE")):
+            time.sleep(5)
+        path = os.path.join(source, rel)
+        with open(path, encoding="utf-8", newline="") as f:
+            original = f.read()
+        lines = original.splitlines(keepends=True)
+        was = lines[lineno - 1]
+        lines[lineno - 1] = new
+        with open(os.path.join(snap, JOURNAL), "w", encoding="utf-8") as f:
+            json.dump({"path": path, "file": original}, f)
+        t0 = time.time()
+        changed, lost = [], []
+        try:
+            with open(path, "w", encoding="utf-8", newline="") as f:
+                f.write("".join(lines))
+            log = os.path.join(logs, mid.replace("/", "_").replace(":", "_"))
+            if not quick_compile(path, build, commands, log + ".build.log"):
+                rc = 1
+            else:
+                rc = run(["cmake", "--build", build, "-j", str(args.jobs)], build, log + ".build.log", 1800)
+            now = objects(build)
+            changed = [p for p, h in now.items() if base.get(p) != h]
+            lost = [p for p in base if p not in now]  # a failed compile removes its object
+            if rc != 0:
+                result, detail = "no compile", tail(log + ".build.log", 3)
+            elif not changed:
+                result, detail = "equivalent", "the same object code"
+            else:
+                result, detail = "survived", "every native test passed"
+                for program in STAGE1[folder]:
+                    exe = os.path.join(build, "tests", program)
+                    rc = run([exe], os.path.join(build, "tests"), f"{log}.{program}.log", args.timeout)
+                    if rc != 0:
+                        result, detail = "killed", f"{program} ({'timed out' if rc == 'timeout' else 'exit %s' % rc})"
+                        break
+                if result == "survived":
+                    rc = run(["ctest", "--test-dir", build, "-LE", "browser", "-j", str(args.jobs), "--timeout", "600",
+                              "--stop-on-failure"], build, log + ".ctest.log", 3600)
+                    if rc != 0:
+                        result, detail = "killed", "ctest: " + failed_ctest(log + ".ctest.log")
+        finally:
+            with open(path, "w", encoding="utf-8", newline="") as f:
+                f.write(original)
+            # The unmutated objects back, newer than the source, so the next
+            # build relinks without compiling them again.
+            for p in changed + lost:
+                shutil.copy2(os.path.join(baseline_dir, os.path.relpath(p, build)), p)
+                os.utime(p)
+            os.remove(os.path.join(snap, JOURNAL))
+        row = {"id": mid, "folder": folder, "file": rel, "line": lineno, "was": was, "new": new, "rule": rule,
+               "result": result, "detail": detail, "seconds": round(time.time() - t0)}
+        out.write(json.dumps(row) + "\n")
+        out.flush()
+        results[mid] = row
+        if result in ("killed", "survived"):
+            counted += 1
+        print(f"[{counted}/{args.sample}] {mid} {result}: {detail} ({row['seconds']} s)", flush=True)
+    run(["cmake", "--build", build, "-j", str(args.jobs)], build, os.path.join(logs, "restore-build.log"), None)
+    report(snap, results, args.seed, args.sample, args.report)
+    return 0
