@@ -336,7 +336,9 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     const [root, path] = locate(value);
     FS.chdir(root);
     const wasLive = live;
+    const opening = performance.now();
     const exit = viewOpen(path, width, height, sets);
+    if (!document.body.dataset.firstOpenMs) document.body.dataset.firstOpenMs = (performance.now() - opening).toFixed(0);
     if (exit === 0) for (const set of values.split(";").filter(Boolean)) viewSet(set);
     report(path, exit, "drawn");
     const files = glimmer.UTF8ToString(glimmer._glimmer_view_files()).split("\n").filter(Boolean);
@@ -360,9 +362,11 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     scaled = true;
     lastFit = -1e9;
     fitCanvas(performance.now());
+    const framing = performance.now();
     glimmer._glimmer_view_frame(0);  // the first picture, then the canvas at the layout's size
     sizeCanvas(glimmer._glimmer_view_width(), glimmer._glimmer_view_height());
     glimmer._glimmer_view_frame(0);
+    if (!document.body.dataset.firstFramesMs) document.body.dataset.firstFramesMs = (performance.now() - framing).toFixed(0);
     if (glimmer._glimmer_view_snapshot()) keepPicture();
     if (exit === 0 && !document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
     if (!wasLive) { lastTick = 0; requestAnimationFrame(tick); }
