@@ -120,7 +120,7 @@ const puppeteerDriver = async () => {
     // panel reads keys as held or not at each frame), let go in reverse.
     hold: async (keys) => {
       for (const k of keys) await page.keyboard.down(k);
-      await sleep(150);
+      await sleep(300);
       for (const k of [...keys].reverse()) await page.keyboard.up(k);
     },
     // The mouse at (x, y) of the page's viewport: "move", "down" or "up";
@@ -233,7 +233,7 @@ const webkitDriver = async () => {
     hold: (names) => {
       const code = (k) => ({ Control: "\uE009", Enter: "\uE007", Shift: "\uE008" })[k] || k;
       return call("POST", `/session/${id}/actions`, { actions: [{ type: "key", id: "keyboard", actions: [
-        ...names.map((k) => ({ type: "keyDown", value: code(k) })), { type: "pause", duration: 150 },
+        ...names.map((k) => ({ type: "keyDown", value: code(k) })), { type: "pause", duration: 300 },
         ...[...names].reverse().map((k) => ({ type: "keyUp", value: code(k) }))] }] });
     },
     // A right press and release through WebDriver come to the page as a

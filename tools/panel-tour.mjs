@@ -60,8 +60,11 @@ export async function runTour(browser, pageUrl) {
     if (py < 40 || py > window.innerHeight - 40) { window.scrollBy(0, py - window.innerHeight / 2); r = canvas.getBoundingClientRect(); }
     return [r.left + (x + ${at} * w) * scale, r.top + (y + h / 2) * scale];
   })()`);
+  // Each event 300 ms apart: the panel (Dear ImGui 1.86) reads the button
+  // as held or not at each frame, so a press and release inside one slow
+  // frame (a loaded CI machine) would be no click at all.
   const press = async (x, y, button) => {
-    for (const kind of ["move", "down", "up"]) { await browser.mouse(kind, x, y, button); await sleep(150); }
+    for (const kind of ["move", "down", "up"]) { await browser.mouse(kind, x, y, button); await sleep(300); }
   };
   const act = async (s) => {
     let at = null;

@@ -157,9 +157,9 @@ public:
             // replaces it. Each key held for a few frames: ImGui 1.86 reads
             // keys as held or not at each frame, and a press and release
             // between two frames of a slow picture would be lost.
-            x(at + "click 1 sleep 0.3 keydown ctrl sleep 0.1 keydown a sleep 0.15 keyup a sleep 0.1 keyup ctrl sleep 0.2");
+            x(at + "click 1 sleep 0.3 keydown ctrl sleep 0.1 keydown a sleep 0.3 keyup a sleep 0.1 keyup ctrl sleep 0.2");
             x(fmt::format("type --delay 30 '{}'", s.text));
-            if (s.action == "type") x("sleep 0.2 keydown Return sleep 0.15 keyup Return");
+            if (s.action == "type") x("sleep 0.2 keydown Return sleep 0.3 keyup Return");
             std::this_thread::sleep_for(300ms);
         } else return "unknown action '" + s.action + "'";
         return "";
