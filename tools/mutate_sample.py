@@ -113,21 +113,9 @@ def objects(build):
 
 
 def run(cmd, cwd, log, timeout):
-    with open(log, "w") as out:
-        p = subprocess.Popen(cmd, cwd=cwd, stdout=out, stderr=subprocess.STDOUT, start_new_session=True)
-        try:
-            return p.wait(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            os.killpg(p.pid, 9)
-            p.wait()
-            return "timeout"
-        except BaseException:
-            try:
-                os.killpg(p.pid, 9)
-            except ProcessLookupError:
-                pass
-            p.wait()
-            raise
+    """The exit status (or "timeout"), the output in `log`: the table mode's runner."""
+    from mutate import run_logged
+    return run_logged(cmd, cwd, log, timeout)[0]
 
 
 def tail(log, n=6):
@@ -168,7 +156,7 @@ def quick_compile(path, build, commands, log):
     return run(["sh", "-c", re.sub(r" -o \S+", " -o /dev/null", command) + " -fsyntax-only"], directory, log, 600) == 0
 
 
-def git_head(source):
+def git_head():
     r = subprocess.run(["git", "-C", os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
                         "rev-parse", "HEAD"], capture_output=True, text=True)
     return r.stdout.strip()
@@ -208,7 +196,7 @@ def decided(snap):
     return out
 
 
-def report(snap, results, seed, want, out=None):
+def report(results, seed, want, out=None):
     rows = list(results.values())
     counted = [r for r in rows if r["result"] in ("killed", "survived")]
     lines = [f"Sampled mutants (seed {seed}, {len(counted)} of the {want} wanted counted; "
@@ -237,9 +225,9 @@ def main(args):
     from mutate import sync_snapshot  # the copy of the working tree, as the table's mode makes it
     results = decided(snap)
     if args.sample_report_only:
-        report(snap, results, args.seed, args.sample, args.report)
+        report(results, args.seed, args.sample, args.report)
         return 0
-    head = git_head(snap)
+    head = git_head()
     meta_path = os.path.join(snap, "sample-source.json")
     if os.path.exists(meta_path) and results and not args.sample_reset:
         with open(meta_path) as f:
@@ -350,5 +338,5 @@ def main(args):
             counted += 1
         print(f"[{counted}/{args.sample}] {mid} {result}: {detail} ({row['seconds']} s)", flush=True)
     run(["cmake", "--build", build, "-j", str(args.jobs)], build, os.path.join(logs, "restore-build.log"), None)
-    report(snap, results, args.seed, args.sample, args.report)
+    report(results, args.seed, args.sample, args.report)
     return 0

@@ -251,7 +251,7 @@ const webkitDriver = async () => {
       : call("POST", `/session/${id}/actions`, { actions: [{ type: "pointer", id: "mouse",
       parameters: { pointerType: "mouse" }, actions: [kind === "move"
         ? { type: "pointerMove", x: Math.round(x), y: Math.round(y), origin: "viewport" }
-        : { type: kind === "down" ? "pointerDown" : "pointerUp", button: button === "right" ? 2 : 0 }] }] }),
+        : { type: kind === "down" ? "pointerDown" : "pointerUp", button: 0 }] }] }),
     go: (to) => call("POST", `/session/${id}/url`, { url: to }),
     screenshot: async () => Buffer.from(await call("GET", `/session/${id}/screenshot`), "base64"),
     close: closeBrowser,

@@ -23,9 +23,10 @@ bool isIntType(const Renderer& r, int program, const std::string& name) {
     return r.uniformKind(program, name) == Renderer::UniformKind::Int;
 }
 
-std::string valuesText(const std::vector<double>& v) {
+// "1 0.5 0.2" (or with `sep` between: the `panel` command's "1,0.5,0.2").
+std::string valuesText(const std::vector<double>& v, const char* sep = " ") {
     std::string s;
-    for (double x : v) s += (s.empty() ? "" : " ") + fmt::format("{:g}", x);
+    for (double x : v) s += (s.empty() ? "" : sep) + fmt::format("{:g}", x);
     return s;
 }
 
@@ -309,18 +310,12 @@ std::string panelState(const ViewerState& s, const std::optional<WatchRange>& ra
                         range ? fmt::format("{:g},{:g}", range->lo, range->hi) : "auto", s.errors.size(), word(s.status));
     if (s.good && s.values) {
         for (const auto& c : mergedUniforms(s.good->plan, s.splitUniforms)) {
-            std::vector<double> v = s.values->get(c.programs.front(), c.name);
-            std::string text;
-            for (double x : v) text += (text.empty() ? "" : ",") + fmt::format("{:g}", x);
-            line += fmt::format(" {}={}", word(c.name), word(text));
+            line += fmt::format(" {}={}", word(c.name), word(valuesText(s.values->get(c.programs.front(), c.name), ",")));
         }
         if (s.renderer)  // the ones the shaders read and the script never sets, once moved
             for (size_t p = 0; p < s.good->plan.programs.size(); ++p)
-                for (const auto& u : s.renderer->unsetUniforms(int(p))) {
-                    std::string text;
-                    for (double x : s.values->get(int(p), u.name)) text += (text.empty() ? "" : ",") + fmt::format("{:g}", x);
-                    line += fmt::format(" {}={}", word(u.name), word(text));
-                }
+                for (const auto& u : s.renderer->unsetUniforms(int(p)))
+                    line += fmt::format(" {}={}", word(u.name), word(valuesText(s.values->get(int(p), u.name), ",")));
     }
     return line;
 }

@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "common/test_folder.h"
+#include "image/image.h"
 #include "viewer_process.h"
 #include "x11_driver.h"
 
@@ -94,12 +95,11 @@ std::set<fs::path> pngsIn(const fs::path& dir) {
     return out;
 }
 
-// The size in a PNG's header.
+// A saved PNG's size, "WxH" ("?" when it does not load).
 std::string pngSize(const fs::path& p) {
-    auto bytes = readBytes(p);
-    if (bytes.size() < 24) return "?";
-    auto be = [&](size_t at) { return (unsigned(bytes[at]) << 24) | (unsigned(bytes[at + 1]) << 16) | (unsigned(bytes[at + 2]) << 8) | bytes[at + 3]; };
-    return fmt::format("{}x{}", be(16), be(20));
+    glimmer::Image img;
+    std::string why;
+    return glimmer::loadImage(p.string(), img, why) ? fmt::format("{}x{}", img.width, img.height) : "?";
 }
 
 class WindowTour {
