@@ -71,5 +71,8 @@ echo "sanitize-ci: test_cli (children on their default backend)"
 # LeakSanitizer then reports them from "<unknown module>", the viewer exits 1
 # and the case fails. Preloading the drivers would reach xvfb-run's shell and
 # Xvfb too, so here leak detection is off (ASan and UBSan still on).
-echo "sanitize-ci: test_viewer (leak detection off)"
-(cd build-asan/tests && ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 ./test_viewer --gtest_brief=1)
+# The panel tour (PanelTour.*, ~100 s natively) is left out: it clicks the
+# controls the other viewer cases already run under the sanitizers, and CI's
+# budget is 75 minutes.
+echo "sanitize-ci: test_viewer (leak detection off; the panel tour left out)"
+(cd build-asan/tests && ASAN_OPTIONS=detect_leaks=0:abort_on_error=0 ./test_viewer --gtest_brief=1 --gtest_filter=-PanelTour.*)

@@ -12,10 +12,14 @@ build="${1:-build}"
 seed="${GLIMMER_SHUFFLE_SEED:-$(( ($(date +%s) % 99999) + 1 ))}"
 echo "shuffled test programs: seed $seed, LANG=${LANG:-} LC_ALL=${LC_ALL:-}"
 failed=0 passed=0 bad=0  # cases passed and failed; programs that failed
+# The panel tour (test_viewer PanelTour.*) is one case of ~100 s whose steps
+# run in their own order whatever the shuffle; CTest ran it already, and CI's
+# budget is 75 minutes, so it is left out here.
+skip='-PanelTour.*'
 for t in "$build"/tests/test_*; do
   [ -x "$t" ] && [ -f "$t" ] || continue
   log="$(mktemp)"
-  "$t" --gtest_shuffle --gtest_random_seed="$seed" >"$log" 2>&1
+  "$t" --gtest_shuffle --gtest_random_seed="$seed" --gtest_filter="$skip" >"$log" 2>&1
   rc=$?
   p=$(sed -n 's/^\[  PASSED  \] \([0-9]*\) tests\?\..*/\1/p' "$log" | head -1)
   f=$(sed -n 's/^\[  FAILED  \] \([0-9]*\) tests\?, listed below:.*/\1/p' "$log" | head -1)
