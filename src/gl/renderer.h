@@ -150,7 +150,9 @@ public:
     // The texel-rate floor (gl/texel_rate.cpp): the fastest of `repeat` runs of
     // a hand-written full-screen pass fetching `taps` bilinear texels a
     // pixel from a width x height texture of `format` into a target of the
-    // same, timed as render() times passes. -1 when the probe cannot run.
+    // same, timed as render() times passes. -1 when the probe cannot run,
+    // and at once (nothing built) outside 1..1024 taps, 1..16384 pixels each
+    // way, or fewer than one repeat: the tap loop is unrolled by the driver.
     // It is drawn for `warmUp` of wall clock first (a GPU raises its clocks).
     double texelRateMs(int width, int height, TextureDecl::Format format, int taps, int repeat,
                        std::chrono::milliseconds warmUp = std::chrono::milliseconds(200));

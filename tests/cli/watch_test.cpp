@@ -257,5 +257,51 @@ TEST(CliWatch, ScopeLineAndTypeErrorsAreExact) {
                                  "example bloom.frag:12:rgbblur)\n"), 1) << usage.err;
 }
 
+// A range whose numbers do not read as finite doubles is refused, whole: a
+// bound beyond a double's range (1e999) must not fall back to the value the
+// range held before (issue 40: the number's parse error accepted, a sampled
+// mutant no test caught).
+TEST(CliWatch, ARangeWhoseBoundsAreNotFiniteNumbersIsRefused) {
+    const std::string script = std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib";
+    TempDir dir;
+    for (const char* range : {"0,1e999", "-1e999,1", "0,nan", "0,inf", "0,1x", "0 1", "1,0"}) {
+        auto r = runGlimmer({"render", script, "-o", dir.file("x.png"), "--watch", "bloom.frag:12:rgbblur",
+                             "--watch-range", range});
+        EXPECT_EQ(r.exitCode, 2) << range << r.err;
+        EXPECT_EQ(countOf(r.err, std::string("glimmer: error: --watch-range '") + range +
+                                     "' is not LO,HI with LO less than HI (for example 0,1)\n"),
+                  1)
+            << range << r.err;
+        EXPECT_FALSE(fs::exists(dir.file("x.png"))) << range;
+    }
+}
+
+// A directive's end is found by the GLSL lexer: a block comment opened on a
+// '#define' line runs on to its "*/", even after a '/' of division on that
+// line. Read wrong, the comment's second line becomes code and its '{'
+// puts main's lines "outside any function" (issue 40: a sampled mutant of
+// the "//" test no test caught).
+TEST(CliWatch, ABlockCommentAfterADivisionInADefineEndsWhereItsStarSlashIs) {
+    TempDir dir;
+    std::ofstream(dir.file("s.glib")) << "Ortho -1. 1. -1. 1.\nVertex c.vert\nFragment c.frag\n"
+                                         "Program C uAdd <0. 1. 4.>\nQuadXY .2 2.\n";
+    std::ofstream(dir.file("c.vert")) << "#version 120\nvarying vec2 vST;\nvoid main() { vST = gl_MultiTexCoord0.st; "
+                                         "gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n";
+    std::ofstream(dir.file("c.frag")) << "#version 120\n"
+                                         "#define HALF(x) ((x)/2.) /* half of x; the comment goes on\n"
+                                         "   to a second line { and a brace */\n"
+                                         "uniform float uAdd;\nvarying vec2 vST;\nvoid main() {\n"
+                                         "    float h = HALF(uAdd);\n    gl_FragColor = vec4(h, vST, 1.);\n}\n";
+    auto inMain = runGlimmer({"check", dir.file("s.glib"), "--watch", "c.frag:7:uAdd"});
+    EXPECT_EQ(inMain.exitCode, 0) << inMain.err;
+    EXPECT_EQ(inMain.out, "watch c.frag:7 uAdd, pass 1 (Program C): can be watched\n") << inMain.err;
+    auto inComment = runGlimmer({"check", dir.file("s.glib"), "--watch", "c.frag:3:uAdd"});
+    EXPECT_EQ(inComment.exitCode, 1);
+    EXPECT_NE(inComment.err.find("c.frag:3:1: error: line 3 holds no statement (it is blank, a comment or a "
+                                 "directive): watch a line with one\n   to a second line { and a brace */\n^\n"),
+              std::string::npos)
+        << inComment.err;
+}
+
 }  // namespace
 }  // namespace glimmer_cli

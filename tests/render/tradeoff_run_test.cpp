@@ -151,3 +151,24 @@ TEST(TradeoffRun, AMethodThatCannotRunStopsTheLoop) {
         EXPECT_NE(printed.find("method.glib"), std::string::npos) << printed;
     }
 }
+
+// The texel-rate probe that `tradeoff` divides by (gl/texel_rate.cpp) takes
+// what renderer.h promises, 1 to 1024 taps and 1 to 16384 pixels each way,
+// and refuses the rest with -1 before it builds anything (issue 40: a sampled
+// mutant that refused 1024 taps survived every test).
+TEST(TexelRate, TheProbeRunsFromOneTo1024TapsAndRefusesOutsideThem) {
+    for (const std::string& backend : testBackends()) {
+        SCOPED_TRACE(backend);
+        Fixture f(backend);
+        ASSERT_TRUE(f.renderer) << "backend '" << backend << "' is unusable: " << f.why;
+        const auto none = std::chrono::milliseconds(0);
+        const auto rgba8 = TextureDecl::Format::RGBA8;
+        EXPECT_GE(f.renderer->texelRateMs(4, 4, rgba8, 1, 1, none), 0.);
+        EXPECT_GE(f.renderer->texelRateMs(4, 4, rgba8, 1024, 1, none), 0.);
+        EXPECT_EQ(f.renderer->texelRateMs(4, 4, rgba8, 0, 1, none), -1.);
+        EXPECT_EQ(f.renderer->texelRateMs(4, 4, rgba8, 1025, 1, none), -1.);
+        EXPECT_EQ(f.renderer->texelRateMs(0, 4, rgba8, 9, 1, none), -1.);
+        EXPECT_EQ(f.renderer->texelRateMs(4, 16385, rgba8, 9, 1, none), -1.);
+        EXPECT_EQ(f.renderer->texelRateMs(4, 4, rgba8, 9, 0, none), -1.);
+    }
+}
