@@ -25,6 +25,7 @@ Usage:
   tools/mutate.py --snapshot DIR --match grade --report mutation.md
   tools/mutate.py --snapshot DIR --prepare    # copy and build only (to work on the tests)
   tools/mutate.py --sample 200 --seed 40 --um ~/universalmutator   # sampled mutants (issue 40)
+  tools/mutate.py --sample 200 --sample-recheck --um ~/universalmutator  # survivors against new tests
 
 --build DIR mutates the source tree DIR was configured from (read from its
 CMakeCache.txt), in place: while a mutant is in, anyone building or
@@ -264,6 +265,11 @@ def main():
     sample.add_argument("--um", help="universalmutator's source tree, when it is not installed")
     sample.add_argument("--sample-reset", action="store_true", help="forget the campaign's results and start over")
     sample.add_argument("--sample-report-only", action="store_true", help="print the campaign's score and stop")
+    sample.add_argument("--sample-recheck", action="store_true",
+                        help="move the campaign's source to the working tree and try every survivor again, "
+                             "then go on drawing")
+    sample.add_argument("--sample-recheck-only", action="store_true",
+                        help="with --sample-recheck: stop after the survivors")
     args = ap.parse_args()
     if args.sample is not None:
         import mutate_sample

@@ -29,6 +29,16 @@ whether the tests catch bugs a rule-based tool writes. Contract:
   unless --sample-reset). Touch SNAP/PAUSE to pause between mutants.
 - Crash-safe: the mutated file's original text is journalled before the
   write and put back by the next run.
+- Rechecks (--sample-recheck): the snapshot moves to the working tree, and
+  every survivor is tried again there, found by its text (the line it
+  changed, nearest its old number), so a test written since can kill it.
+  The row written last for a mutant is its verdict. The walk then goes on
+  over the new source's candidates, with the same seed, skipping any
+  mutant already decided under another line number (same file, same old
+  and new text).
+- Shown equivalent: EQUIVALENT below, a mutant's id and one line why no
+  input the program can be given tells it from the original. These leave
+  the count, as trivially equivalent ones do.
 """
 import glob
 import hashlib
@@ -49,6 +59,15 @@ RULES = ["universal.rules", "cpp.rules", "c_like.rules"]
 STAGE1 = {"plan": ["test_plan"], "shader": ["test_shader"], "gl": ["test_shaderlog", "test_render"],
           "grade": ["test_grade"], "process": ["test_render", "test_glman"], "pipeline": ["test_pipeline"]}
 RESULTS = "sample-results.jsonl"
+# Survivors read and shown equivalent (docs/RELIABILITY.md repeats the why).
+EQUIVALENT = {
+    "src/plan/draw_units.cpp:20:716581da": "size_t(-1) is never below a vector's size, so t = -1 still fails the next test",
+    "src/gl/renderer_internal.h:46:e3287010": "a watch Level's height is set (watch_gpu.cpp) before the Level is stored or read",
+    "src/gl/texel_rate.cpp:19:bdeed1cf": "for gl_VertexID 0, 1, 2 (one triangle), (id << 1) & 3 and (id << 1) & 2 are both 0, 2, 0",
+    "src/plan/plan_textures.cpp:116:7844c03b": "both callers of textureHead set isFile = false before the call",
+    "src/shader/compat_rewrite.cpp:56:ee2d5297": "definesOf only ever reads kGstapPrelude or \"\", every line of which is "
+                                         "'#define NAME VALUE', which the guard lets through",
+}
 JOURNAL = ".sample-journal.json"
 
 
@@ -198,21 +217,35 @@ def decided(snap):
 
 def report(results, seed, want, out=None):
     rows = list(results.values())
-    counted = [r for r in rows if r["result"] in ("killed", "survived")]
+    counted = [r for r in rows if counts(r)]
+    shown = [r for r in rows if r["id"] in EQUIVALENT]
     lines = [f"Sampled mutants (seed {seed}, {len(counted)} of the {want} wanted counted; "
              f"{sum(r['result'] == 'no compile' for r in rows)} did not compile, "
-             f"{sum(r['result'] == 'equivalent' for r in rows)} equivalent by object code):", "",
+             f"{sum(r['result'] == 'equivalent' for r in rows)} equivalent by object code, "
+             f"{len(shown)} shown equivalent):", "",
              "| folder | counted | killed | survived | score |", "|---|---|---|---|---|"]
     for folder in FOLDERS:
         c = [r for r in counted if r["folder"] == folder]
         k = sum(r["result"] == "killed" for r in c)
         lines.append(f"| src/{folder} | {len(c)} | {k} | {len(c) - k} | "
                      f"{(100 * k / len(c)):.0f}% |" if c else f"| src/{folder} | 0 | | | |")
+    k = sum(r["result"] == "killed" for r in counted)
+    if counted:
+        lines.append(f"| all | {len(counted)} | {k} | {len(counted) - k} | {(100 * k / len(counted)):.0f}% |")
+    rechecked = [r for r in counted if r.get("recheck") and r["result"] == "killed"]
+    if rechecked:
+        lines += ["", "Survivors killed since, by a test written for them (rechecked):", ""]
+        for r in sorted(rechecked, key=lambda r: r["id"]):
+            lines.append(f"- `{r['file']}:{r['line']}` at {r['recheck'][:10]}: {r['detail']}")
     survivors = [r for r in counted if r["result"] == "survived"]
     if survivors:
         lines += ["", "Survivors:", ""]
         for r in sorted(survivors, key=lambda r: r["id"]):
             lines.append(f"- `{r['file']}:{r['line']}`: `{r['was'].strip()}` -> `{r['new'].strip()}`")
+    if shown:
+        lines += ["", "Shown equivalent:", ""]
+        for r in sorted(shown, key=lambda r: r["id"]):
+            lines.append(f"- `{r['file']}:{r['line']}`: {EQUIVALENT[r['id']]}")
     text = "\n".join(lines) + "\n"
     print(text)
     if out:
@@ -220,89 +253,58 @@ def report(results, seed, want, out=None):
             f.write(text)
 
 
-def main(args):
-    snap = os.path.abspath(args.snapshot or os.path.join("build-mut", "sample"))
-    from mutate import sync_snapshot  # the copy of the working tree, as the table's mode makes it
-    results = decided(snap)
-    if args.sample_report_only:
-        report(results, args.seed, args.sample, args.report)
-        return 0
-    head = git_head()
-    meta_path = os.path.join(snap, "sample-source.json")
-    if os.path.exists(meta_path) and results and not args.sample_reset:
-        with open(meta_path) as f:
-            meta = json.load(f)
-        if meta.get("seed") != args.seed:
-            sys.exit(f"mutate: this campaign's seed is {meta.get('seed')}; --sample-reset to start over")
-        source = os.path.join(snap, "src")  # the campaign's fixed copy, not re-synced
-    else:
-        if args.sample_reset and os.path.exists(os.path.join(snap, RESULTS)):
-            os.remove(os.path.join(snap, RESULTS))
-            results = {}
-        source = sync_snapshot(snap)
-        os.makedirs(snap, exist_ok=True)
-        with open(meta_path, "w") as f:
-            json.dump({"seed": args.seed, "commit": head, "started": time.strftime("%Y-%m-%d %H:%M")}, f)
-    recover(snap)
-    build = configure(snap, source)
-    logs = os.path.join(snap, "logs")
-    os.makedirs(logs, exist_ok=True)
-    mutator = load_universalmutator(args.um)
-    candidates = pool(source, mutator)
-    order = candidates[:]
-    random.Random(args.seed).shuffle(order)
-    print(f"mutate: {len(candidates)} candidate mutants in {', '.join('src/' + f for f in FOLDERS)}; "
-          f"seed {args.seed}; {len(results)} decided already", flush=True)
+def counts(row):
+    """A mutant that counts toward the sample: it compiled, and it is not
+    equivalent, trivially or shown."""
+    return row["result"] in ("killed", "survived") and row["id"] not in EQUIVALENT
 
-    print("mutate: building the unmutated snapshot", flush=True)
-    if run(["cmake", "--build", build, "-j", str(args.jobs)], build, os.path.join(logs, "baseline-build.log"), None) != 0:
-        sys.exit(f"mutate: the unmutated snapshot does not build: {logs}/baseline-build.log")
-    baseline_dir = os.path.join(snap, "baseline-objects")
-    base = objects(build)
-    if not args.no_baseline and not results:
-        rc = run(["ctest", "--test-dir", build, "-LE", "browser", "-j", str(args.jobs), "--timeout", "600"], build,
-                 os.path.join(logs, "baseline-ctest.log"), None)
-        if rc != 0:
-            sys.exit(f"mutate: the native suite fails unmutated ({failed_ctest(os.path.join(logs, 'baseline-ctest.log'))}); "
-                     "nothing mutated")
-    shutil.rmtree(baseline_dir, ignore_errors=True)
-    for p in base:
-        d = os.path.join(baseline_dir, os.path.relpath(p, build))
-        os.makedirs(os.path.dirname(d), exist_ok=True)
-        shutil.copy2(p, d)
 
-    commands = compile_commands(build)
-    counted = sum(r["result"] in ("killed", "survived") for r in results.values())
-    out = open(os.path.join(snap, RESULTS), "a", encoding="utf-8")
-    for cand in order:
-        if counted >= args.sample:
-            break
-        mid, folder, rel, lineno, new, rule = cand
-        if mid in results:
-            continue
-        while os.path.exists(os.path.join(snap, "PAUSE")):
-            time.sleep(5)
-        path = os.path.join(source, rel)
+def pause(snap):
+    while os.path.exists(os.path.join(snap, "PAUSE")):
+        time.sleep(5)
+
+
+def find_line(path, was, near):
+    """The number of the line whose text is `was`, nearest `near`; None when
+    no line is."""
+    with open(path, encoding="utf-8", newline="") as f:
+        lines = f.read().splitlines(keepends=True)
+    hits = [i + 1 for i, line in enumerate(lines) if line == was]
+    return min(hits, key=lambda n: abs(n - near)) if hits else None
+
+
+class Trial:
+    """One mutant tried: written, built, tested, and the file and the
+    objects put back, whatever happened."""
+
+    def __init__(self, snap, source, build, logs, base, baseline_dir, commands, args):
+        self.snap, self.source, self.build, self.logs = snap, source, build, logs
+        self.base, self.baseline_dir, self.commands, self.args = base, baseline_dir, commands, args
+
+    def run(self, folder, rel, lineno, new):
+        """(result, detail, seconds)."""
+        build, args = self.build, self.args
+        path = os.path.join(self.source, rel)
         with open(path, encoding="utf-8", newline="") as f:
             original = f.read()
         lines = original.splitlines(keepends=True)
-        was = lines[lineno - 1]
         lines[lineno - 1] = new
-        with open(os.path.join(snap, JOURNAL), "w", encoding="utf-8") as f:
+        with open(os.path.join(self.snap, JOURNAL), "w", encoding="utf-8") as f:
             json.dump({"path": path, "file": original}, f)
         t0 = time.time()
         changed, lost = [], []
         try:
             with open(path, "w", encoding="utf-8", newline="") as f:
                 f.write("".join(lines))
-            log = os.path.join(logs, mid.replace("/", "_").replace(":", "_"))
-            if not quick_compile(path, build, commands, log + ".build.log"):
+            digest = hashlib.sha1(new.encode()).hexdigest()[:8]
+            log = os.path.join(self.logs, f"{rel}_{lineno}_{digest}".replace("/", "_"))
+            if not quick_compile(path, build, self.commands, log + ".build.log"):
                 rc = 1
             else:
                 rc = run(["cmake", "--build", build, "-j", str(args.jobs)], build, log + ".build.log", 1800)
             now = objects(build)
-            changed = [p for p, h in now.items() if base.get(p) != h]
-            lost = [p for p in base if p not in now]  # a failed compile removes its object
+            changed = [p for p, h in now.items() if self.base.get(p) != h]
+            lost = [p for p in self.base if p not in now]  # a failed compile removes its object
             if rc != 0:
                 result, detail = "no compile", tail(log + ".build.log", 3)
             elif not changed:
@@ -326,17 +328,115 @@ def main(args):
             # The unmutated objects back, newer than the source, so the next
             # build relinks without compiling them again.
             for p in changed + lost:
-                shutil.copy2(os.path.join(baseline_dir, os.path.relpath(p, build)), p)
+                shutil.copy2(os.path.join(self.baseline_dir, os.path.relpath(p, build)), p)
                 os.utime(p)
-            os.remove(os.path.join(snap, JOURNAL))
-        row = {"id": mid, "folder": folder, "file": rel, "line": lineno, "was": was, "new": new, "rule": rule,
-               "result": result, "detail": detail, "seconds": round(time.time() - t0)}
+            os.remove(os.path.join(self.snap, JOURNAL))
+        return result, detail, round(time.time() - t0)
+
+
+def main(args):
+    snap = os.path.abspath(args.snapshot or os.path.join("build-mut", "sample"))
+    from mutate import sync_snapshot  # the copy of the working tree, as the table's mode makes it
+    results = decided(snap)
+    if args.sample_report_only:
+        report(results, args.seed, args.sample, args.report)
+        return 0
+    head = git_head()
+    meta_path = os.path.join(snap, "sample-source.json")
+    recover(snap)
+    if os.path.exists(meta_path) and results and not args.sample_reset:
+        with open(meta_path) as f:
+            meta = json.load(f)
+        if meta.get("seed") != args.seed:
+            sys.exit(f"mutate: this campaign's seed is {meta.get('seed')}; --sample-reset to start over")
+        if args.sample_recheck:
+            source = sync_snapshot(snap)  # the campaign moves to the working tree
+            meta.setdefault("rechecked", []).append({"commit": head, "at": time.strftime("%Y-%m-%d %H:%M")})
+            meta["commit"] = head
+            with open(meta_path, "w") as f:
+                json.dump(meta, f)
+        else:
+            source = os.path.join(snap, "src")  # the campaign's copy, as the last run or recheck left it
+    else:
+        if args.sample_reset and os.path.exists(os.path.join(snap, RESULTS)):
+            os.remove(os.path.join(snap, RESULTS))
+            results = {}
+        source = sync_snapshot(snap)
+        os.makedirs(snap, exist_ok=True)
+        with open(meta_path, "w") as f:
+            json.dump({"seed": args.seed, "commit": head, "started": time.strftime("%Y-%m-%d %H:%M")}, f)
+    build = configure(snap, source)
+    logs = os.path.join(snap, "logs")
+    os.makedirs(logs, exist_ok=True)
+    mutator = load_universalmutator(args.um)
+    candidates = pool(source, mutator)
+    order = candidates[:]
+    random.Random(args.seed).shuffle(order)
+    print(f"mutate: {len(candidates)} candidate mutants in {', '.join('src/' + f for f in FOLDERS)}; "
+          f"seed {args.seed}; {len(results)} decided already", flush=True)
+
+    print("mutate: building the unmutated snapshot", flush=True)
+    if run(["cmake", "--build", build, "-j", str(args.jobs)], build, os.path.join(logs, "baseline-build.log"), None) != 0:
+        sys.exit(f"mutate: the unmutated snapshot does not build: {logs}/baseline-build.log")
+    baseline_dir = os.path.join(snap, "baseline-objects")
+    base = objects(build)
+    # The unmutated suite must pass, or every mutant would read "killed":
+    # at the start, and after a recheck moved the source.
+    if not args.no_baseline and (not results or args.sample_recheck):
+        rc = run(["ctest", "--test-dir", build, "-LE", "browser", "-j", str(args.jobs), "--timeout", "600"], build,
+                 os.path.join(logs, "baseline-ctest.log"), None)
+        if rc != 0:
+            sys.exit(f"mutate: the native suite fails unmutated ({failed_ctest(os.path.join(logs, 'baseline-ctest.log'))}); "
+                     "nothing mutated")
+    shutil.rmtree(baseline_dir, ignore_errors=True)
+    for p in base:
+        d = os.path.join(baseline_dir, os.path.relpath(p, build))
+        os.makedirs(os.path.dirname(d), exist_ok=True)
+        shutil.copy2(p, d)
+
+    commands = compile_commands(build)
+    trial = Trial(snap, source, build, logs, base, baseline_dir, commands, args)
+    out = open(os.path.join(snap, RESULTS), "a", encoding="utf-8")
+
+    def record(row):
         out.write(json.dumps(row) + "\n")
         out.flush()
-        results[mid] = row
-        if result in ("killed", "survived"):
+        results[row["id"]] = row
+
+    if args.sample_recheck:
+        survivors = [r for r in results.values() if r["result"] == "survived" and r["id"] not in EQUIVALENT
+                     and r.get("recheck") != head]
+        print(f"mutate: rechecking {len(survivors)} survivors against {head[:10]}", flush=True)
+        for r in sorted(survivors, key=lambda r: r["id"]):
+            pause(snap)
+            lineno = find_line(os.path.join(source, r["file"]), r["was"], r["line"])
+            if lineno is None:
+                row = dict(r, result="gone", detail="its line is no longer in the source", recheck=head, seconds=0)
+            else:
+                result, detail, seconds = trial.run(r["folder"], r["file"], lineno, r["new"])
+                row = dict(r, result=result, detail=detail, recheck=head, seconds=seconds, line_now=lineno)
+            record(row)
+            print(f"[recheck] {r['id']} {row['result']}: {row['detail']} ({row['seconds']} s)", flush=True)
+
+    decided_texts = {(r["file"], r["was"], r["new"]) for r in results.values()}
+    counted = sum(counts(r) for r in results.values())
+    for cand in order:
+        if counted >= args.sample or args.sample_recheck_only:
+            break
+        mid, folder, rel, lineno, new, rule = cand
+        if mid in results:
+            continue
+        with open(os.path.join(source, rel), encoding="utf-8", newline="") as f:
+            was = f.read().splitlines(keepends=True)[lineno - 1]
+        if (rel, was, new) in decided_texts:
+            continue
+        pause(snap)
+        result, detail, seconds = trial.run(folder, rel, lineno, new)
+        record({"id": mid, "folder": folder, "file": rel, "line": lineno, "was": was, "new": new, "rule": rule,
+                "result": result, "detail": detail, "seconds": seconds, "commit": head})
+        if counts(results[mid]):
             counted += 1
-        print(f"[{counted}/{args.sample}] {mid} {result}: {detail} ({row['seconds']} s)", flush=True)
+        print(f"[{counted}/{args.sample}] {mid} {result}: {detail} ({seconds} s)", flush=True)
     run(["cmake", "--build", build, "-j", str(args.jobs)], build, os.path.join(logs, "restore-build.log"), None)
     report(results, args.seed, args.sample, args.report)
     return 0
