@@ -73,6 +73,6 @@ if (process.env.GLIMMER_TRADEOFF_SHOT) {
 }
 result.samePicture = before !== "" && (await page.evaluate("glimmerPage.snapshot()")) === before;
 for (const r of result.rows)
-  for (const k of ["taps", "ms", "min", "max", "modelPsnr", "numPsnr", "numMax", "numOver"]) r[k] = r[k] === "null" ? null : Number(r[k]);
+  for (const k of ["taps", "ms", "min", "max", "modelPsnr", "numPsnr", "numMax", "numOver", "rendersPerRun"]) r[k] = r[k] === "null" ? null : Number(r[k]);
 console.log(JSON.stringify(result));
 page.close(0);

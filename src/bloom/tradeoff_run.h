@@ -42,6 +42,7 @@ struct TradeoffRow {
     // the method's fastest run with it: on a shared GPU, only the fastest
     // runs are free of other work.
     double floorMs = 0;
+    int rendersPerRun = 1;  // the most renders one timed run took (TradeoffSettings::minRun)
     ErrorStats numerical, model;
     Health health;  // of the blurred target: NaN, Inf, negative, above 65504
 };
@@ -68,6 +69,11 @@ struct TradeoffSettings {
     // Renderer::finish(output) to the next (in the browser that waits for
     // the output target itself, WebGL's own finish() does not wait).
     bool wallClock = false;
+    // With wallClock, a run renders again until this much wall clock has
+    // passed and reads as the total over its renders: the page's clock may
+    // tick in whole milliseconds (Firefox, WebKit), which made every blur of
+    // under a millisecond read 0 or 1 and five methods tie (issue 39).
+    std::chrono::milliseconds minRun{0};
 };
 
 // One method on one renderer: prepare, warmUp, timeRun (repeat times),
@@ -99,6 +105,7 @@ private:
     std::optional<UniformValues> values_;  // once prepared (it is made from the plan)
     int outputTexture_ = -1;
     std::vector<double> times_;
+    int rendersPerRun_ = 1;
 };
 
 // The verdict's candidates: a method far from a Gaussian is not one however

@@ -50,6 +50,12 @@ constexpr const char* kBundledLesson = "/lesson";
 // given in frames of at most about 100 ms each (at least one draw each).
 constexpr auto kWarmUpStep = std::chrono::milliseconds(100);
 constexpr int kWarmUpSteps = 2;
+// Each timed run renders for at least this long (TradeoffSettings::minRun):
+// Firefox's and WebKit's performance.now() tick in whole milliseconds
+// without cross-origin isolation, so a 0.3 ms blur timed once read 0 or 1;
+// over 25 ms the tick is at most 4% of the figure. One run is still one
+// animation frame.
+constexpr auto kMinRun = std::chrono::milliseconds(25);
 
 // One measuring run of the page, from start to its last row.
 struct Run {
@@ -98,10 +104,10 @@ std::string rowsJson() {
         const TradeoffRow& r = run->rows[i];
         out << (i ? ", " : "")
             << fmt::format(R"({{"method": {}, "family": {}, "taps": {}, "ms": {}, "min": {}, "max": {}, "runs": {}, )"
-                           R"("sigma": {}, "numerical": {}, "model": {}, "healthy": {}}})",
+                           R"("renders_per_run": {}, "sigma": {}, "numerical": {}, "model": {}, "healthy": {}}})",
                            jsonString(r.method->name), jsonString(r.method->family), r.method->tapsPerPixel,
                            jsonNumber(r.ms), jsonNumber(r.time.min), jsonNumber(r.time.max), r.time.runs,
-                           jsonNumber(r.sigma), errors(r.numerical), errors(r.model), r.health.healthy());
+                           r.rendersPerRun, jsonNumber(r.sigma), errors(r.numerical), errors(r.model), r.health.healthy());
     }
     const std::vector<TimedCandidate> candidates = nearGaussianCandidates(run->rows);
     const FastestVerdict verdict = fastestBeyondNoise(candidates);
@@ -166,6 +172,7 @@ EMSCRIPTEN_KEEPALIVE int glimmer_tradeoff_start(int width, int height, int repea
     r->settings.folder = kFolder;
     r->settings.includeDirs = blurKernelDirs(kBundledLesson);
     r->settings.wallClock = true;
+    r->settings.minRun = kMinRun;
     r->status = fmt::format("0/{}", r->methods.size());
     run = std::move(r);
     return int(run->methods.size());

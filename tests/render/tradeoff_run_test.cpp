@@ -129,6 +129,39 @@ TEST(TradeoffRun, WaitingOnTheTargetTimesTheSamePixels) {
     }
 }
 
+// The page's clock may tick in whole milliseconds, so a run there renders
+// until TradeoffSettings::minRun has passed and reads as the time per
+// render; without minRun a run is one render. The pixels are the same.
+TEST(TradeoffRun, AWallClockRunRendersUntilItsMinimumHasPassed) {
+    for (const std::string& backend : testBackends()) {
+        SCOPED_TRACE(backend);
+        Fixture f(backend);
+        ASSERT_TRUE(f.renderer) << "backend '" << backend << "' is unusable: " << f.why;
+        f.settings.wallClock = true;
+        BlurMethod sep9;
+        for (const BlurMethod& m : someMethods())
+            if (m.name == "sep9 x1") sep9 = m;
+        ASSERT_EQ(sep9.name, "sep9 x1");
+        Diagnostics diags;
+        TradeoffRow once, long_;
+        for (int minRun : {0, 60}) {
+            f.settings.minRun = std::chrono::milliseconds(minRun);
+            BlurMeasurement m(*f.renderer, f.input, sep9, f.settings);
+            ASSERT_TRUE(m.prepare(diags));
+            m.warmUp();
+            m.timeRun();
+            m.timeRun();
+            EXPECT_EQ(m.runsTimed(), 2);
+            (minRun ? long_ : once) = m.result();
+        }
+        EXPECT_EQ(once.rendersPerRun, 1);
+        // A 48x32 9-tap blur takes well under 30 ms even on a loaded llvmpipe.
+        EXPECT_GT(long_.rendersPerRun, 1);
+        EXPECT_GT(long_.time.min, 0);
+        EXPECT_EQ(long_.numerical.rmse, once.numerical.rmse);
+    }
+}
+
 // A method whose kernel file cannot be found stops the run at that method:
 // the rows before it kept, the error in the diagnostics with its file.
 TEST(TradeoffRun, AMethodThatCannotRunStopsTheLoop) {

@@ -23,10 +23,14 @@ const blurMeasurement = (glimmer) => {
   const status = () => glimmer.UTF8ToString(glimmer._glimmer_tradeoff_status());
   // The GPU's own name where the browser tells it (WebGL's GL_RENDERER is
   // the browser's); the canvas's context is the module's, asked again.
+  // WebKit answers "Apple GPU" on every machine (it masks the name even
+  // there): said as what it is, not as a GPU this machine has.
   const gpuName = () => {
     const gl = document.getElementById("canvas").getContext("webgl2");
     const info = gl && gl.getExtension("WEBGL_debug_renderer_info");
-    return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : "";
+    const name = info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : "";
+    const mac = /Mac/.test(navigator.platform || "");
+    return name === "Apple GPU" && !mac ? "a GPU the browser does not name (it says \"Apple GPU\" on any machine)" : name;
   };
   const cell = (row, text, title = "") => {
     const td = row.insertCell();
@@ -42,7 +46,9 @@ const blurMeasurement = (glimmer) => {
         modelPsnr: m.model.psnr, numPsnr: m.numerical.psnr, numMax: m.numerical.max, numOver: m.numerical.over_one_step });
       cell(row, m.method, m.family + ", sigma " + m.sigma.toFixed(2) + " texels");
       cell(row, String(m.taps));
-      cell(row, m.ms.toFixed(2), `fastest run ${m.min.toFixed(2)} ms, slowest ${m.max.toFixed(2)} ms (${m.runs} runs)`);
+      cell(row, m.ms.toFixed(2), `fastest run ${m.min.toFixed(2)} ms, slowest ${m.max.toFixed(2)} ms (${m.runs} runs of ` +
+           `25 ms or more, up to ${m.renders_per_run} render${m.renders_per_run > 1 ? "s" : ""} each)`);
+      row.dataset.rendersPerRun = m.renders_per_run;
       cell(row, fixed(m.model.psnr, 1), `RMSE ${m.model.rmse.toExponential(2)}, largest error ${m.model.max.toExponential(2)}`);
       cell(row, fixed(m.numerical.psnr, 1),
            `RMSE ${m.numerical.rmse.toExponential(2)}, largest error ${m.numerical.max.toExponential(2)}, ` +
