@@ -61,6 +61,15 @@ std::string diagnosticKind(const std::string& message) {
 
 std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, const SourceTexts& sources, bool fold,
                                          bool cascades, bool warnings, size_t maxLines, size_t& notShown) {
+    std::vector<std::string> out;
+    for (FoldedDiagnostic& e : foldDiagnosticEntries(all, sources, fold, cascades, warnings, maxLines, notShown))
+        out.push_back(std::move(e.text));
+    return out;
+}
+
+std::vector<FoldedDiagnostic> foldDiagnosticEntries(const std::vector<Diagnostic>& all, const SourceTexts& sources,
+                                                    bool fold, bool cascades, bool warnings, size_t maxLines,
+                                                    size_t& notShown) {
     notShown = 0;
     std::vector<int> causes = cascades ? errorCauses(all) : std::vector<int>(all.size(), -1);
     // How many errors and warnings follow from each cause.
@@ -72,7 +81,8 @@ std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, con
         for (const auto& d : all)
             if (d.severity == Severity::Warning) ++count[d.file + "\n" + diagnosticKind(d.message)];
     std::map<std::string, bool> printed;
-    std::vector<std::string> out;
+    std::vector<FoldedDiagnostic> out;
+    auto where = [](const Diagnostic& d) { return d.loc.line > 0 ? fmt::format("{}:{}", d.file, d.loc.line) : d.file; };
     for (size_t i = 0; i < all.size(); ++i) {
         const Diagnostic& d = all[i];
         if (d.severity != Severity::Error && !warnings) continue;
@@ -91,7 +101,7 @@ std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, con
             std::string text = formatDiagnostic(d, sources);
             if (std::string more = followers(errorsAfter[i], warningsAfter[i]); !more.empty())
                 text += fmt::format("\n{}:{}: note: {}", sanitizeForTerminal(d.file, false), d.loc.line, more);
-            out.push_back(text);
+            out.push_back({d.severity, text, where(d)});
             continue;
         }
         std::string summary;
@@ -103,7 +113,7 @@ std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, con
         // The message and the name come from the student's files: escaped,
         // as formatDiagnostic escapes a single one (issue 37: a script line
         // "ESC c" reset the teacher's terminal when it came twice).
-        out.push_back(fmt::format("{}: warning: {}", sanitizeForTerminal(d.file, false), summary));
+        out.push_back({Severity::Warning, fmt::format("{}: warning: {}", sanitizeForTerminal(d.file, false), summary), d.file});
     }
     return out;
 }

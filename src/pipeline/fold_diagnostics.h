@@ -24,4 +24,17 @@ std::string diagnosticKind(const std::string& message);
 std::vector<std::string> foldDiagnostics(const std::vector<Diagnostic>& all, const SourceTexts& sources, bool fold,
                                          bool cascades, bool warnings, size_t maxLines, size_t& notShown);
 
+// The same entries with what each is: its severity (a folded group's is
+// Warning) and its place to copy, "file:line" or the file alone. The
+// viewer's panel lists these, so it counts what the terminal and the page
+// count.
+struct FoldedDiagnostic {
+    Severity severity = Severity::Warning;
+    std::string text;
+    std::string where;
+};
+std::vector<FoldedDiagnostic> foldDiagnosticEntries(const std::vector<Diagnostic>& all, const SourceTexts& sources,
+                                                    bool fold, bool cascades, bool warnings, size_t maxLines,
+                                                    size_t& notShown);
+
 }  // namespace glimmer

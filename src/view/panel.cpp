@@ -208,7 +208,8 @@ void messages(ViewerState& s) {
         }
     }
     if (!s.warnings.empty()) {
-        std::string label = fmt::format("{} warning{}###warnings", s.warnings.size(), s.warnings.size() == 1 ? "" : "s");
+        const size_t n = warningCount(s);
+        std::string label = n ? fmt::format("{} warning{}###warnings", n, n == 1 ? "" : "s") : "notes###warnings";
         const bool open = ImGui::TreeNode(label.c_str());
         rememberControl(s, "Warnings");
         if (open) {

@@ -2,21 +2,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "pipeline/fold_diagnostics.h"
 #include "view/view_model.h"
 
 namespace glimmer {
 
+// What `glimmer check` prints (pipeline/fold_diagnostics.h): a warning
+// repeated in kind is one line, so the panel's count is the terminal's and
+// the page's (issue 39: the seed's five uniforms on lines of their own made
+// the panel say 6 warnings where the page said 2). Every error is its own
+// entry, as before (no cascades folded: the panel lists each to click).
+// A note is listed with the warnings and not counted (ViewerState::Message).
 void keepMessages(ViewerState& s, const Diagnostics& diags, const SourceTexts& sources) {
     s.errors.clear();
     s.warnings.clear();
-    for (const auto& d : diags.all()) {
-        std::string where = d.loc.line > 0 ? fmt::format("{}:{}", d.file, d.loc.line) : d.file;
-        (d.severity == Severity::Error ? s.errors : s.warnings).push_back({formatDiagnostic(d, sources), where});
-    }
+    size_t notShown = 0;
+    for (FoldedDiagnostic& e : foldDiagnosticEntries(diags.all(), sources, true, false, true, SIZE_MAX, notShown))
+        (e.severity == Severity::Error ? s.errors : s.warnings)
+            .push_back({std::move(e.text), std::move(e.where), e.severity == Severity::Note});
+}
+
+size_t warningCount(const ViewerState& s) {
+    return size_t(std::count_if(s.warnings.begin(), s.warnings.end(), [](const ViewerState::Message& m) { return !m.note; }));
 }
 
 bool adoptScript(ViewerState& s, LoadedScript next, std::unique_ptr<Renderer> renderer,

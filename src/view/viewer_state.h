@@ -36,6 +36,7 @@ struct ViewerState {
     struct Message {
         std::string text;   // formatted, clang style, with the source line and caret
         std::string where;  // "file:line" to copy
+        bool note = false;  // a note (listed with the warnings, not counted)
     };
     std::vector<Message> errors, warnings;
     bool failed = false;
@@ -86,6 +87,8 @@ struct ViewerState {
 // The diagnostics of a load, kept for the panel: errors first, each with
 // its "file:line", warnings apart (the panel folds them into a count).
 void keepMessages(ViewerState& s, const Diagnostics& diags, const SourceTexts& sources);
+// The warnings the panel lists, notes left out: its count.
+size_t warningCount(const ViewerState& s);
 
 // A script that loaded without errors replaces the last good one: the
 // slider values carry over by name from the script before (the first
