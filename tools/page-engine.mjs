@@ -37,6 +37,11 @@
 //   failures }.
 //   --layout=WxH: the page in a real window of that outer size, opened,
 //   with a watch on and with an error showing (tools/page-window-layout.mjs).
+//   --first=WxH: the page opened in a real window of that outer size, a
+//   fresh profile: the first picture's marks the page sets on its body, in
+//   ms from the start of loading ({ engine, version, url, ready, verdict,
+//   firstPictureMs, moduleReadyMs, firstOpenMs, firstFramesMs });
+//   tools/first-picture.sh runs it (issue 39).
 import { spawn } from "node:child_process";
 import { mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { createServer } from "node:net";
@@ -45,10 +50,12 @@ import { join } from "node:path";
 
 const [engine, pageUrl, outDir, mode] = process.argv.slice(2);
 // --layout=WxH: a real window of that outer size (see tools/page-window-layout.mjs).
-const windowSize = mode && mode.startsWith("--layout=") ? mode.slice(9).split("x").map(Number) : null;
+// --first=WxH: the same window, and only the first picture's marks.
+const sized = mode && (mode.startsWith("--layout=") || mode.startsWith("--first="));
+const windowSize = sized ? mode.slice(mode.indexOf("=") + 1).split("x").map(Number) : null;
 if (!["chromium", "firefox", "webkit"].includes(engine) || !pageUrl || !outDir ||
     (mode && !["--opening", "--serve", "--tour"].includes(mode) && !(windowSize && windowSize.length === 2 && windowSize.every((n) => n > 0)))) {
-  console.error("usage: node tools/page-engine.mjs chromium|firefox|webkit PAGE_URL OUT_DIR [--opening | --serve | --tour | --layout=WxH]");
+  console.error("usage: node tools/page-engine.mjs chromium|firefox|webkit PAGE_URL OUT_DIR [--opening | --serve | --tour | --layout=WxH | --first=WxH]");
   process.exit(2);
 }
 const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
@@ -91,7 +98,9 @@ const puppeteerDriver = async () => {
     // without a display, SwiftShader as the other groups use.
     args: ["--no-sandbox", "--allow-file-access-from-files", "--ignore-gpu-blocklist",
            process.env.DISPLAY ? "--use-angle=gl" : "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-           ...(windowSize ? [`--window-size=${windowSize[0]},${windowSize[1]}`, "--window-position=0,0"] : [])],
+           ...(windowSize ? [`--window-size=${windowSize[0]},${windowSize[1]}`, "--window-position=0,0"] : []),
+           // GLIMMER_CHROMIUM_FLAGS: more flags, for an experiment (space-separated).
+           ...(process.env.GLIMMER_CHROMIUM_FLAGS || "").split(" ").filter(Boolean)],
     ...(windowSize ? { defaultViewport: null } : {}),
   } : {
     // Headless Firefox has no WebGL 2 here: a real window under Xvfb.
@@ -262,6 +271,20 @@ let browser;
 try {
   browser = engine === "webkit" ? await webkitDriver() : await puppeteerDriver();
   if (mode === "--serve") await serveJourney();
+  if (mode && mode.startsWith("--first=")) {
+    await browser.go(pageUrl);
+    let seen = {};
+    for (const end = Date.now() + 30000; Date.now() < end; await sleep(100)) {
+      seen = await browser.evaluate(`(() => { const d = document.body ? document.body.dataset : {};
+        return { ready: d.ready || "", verdict: (document.getElementById("verdict") || {}).textContent || "",
+          firstPictureMs: Number(d.firstPictureMs), moduleReadyMs: Number(d.moduleReadyMs),
+          firstOpenMs: Number(d.firstOpenMs), firstFramesMs: Number(d.firstFramesMs), moduleMs: Number(d.moduleMs),
+          lessonMs: Number(d.lessonMs), keptMs: Number(d.keptMs), firstOpenAtMs: Number(d.firstOpenAtMs),
+          firstFramesAtMs: Number(d.firstFramesAtMs) }; })()`);
+      if (seen.ready === "1" && seen.firstPictureMs > 0) break;
+    }
+    await finishWith({ engine, version: browser.version, url: pageUrl, size: windowSize.join("x"), ...seen });
+  }
   if (windowSize) {
     const { measureLayout } = await import("./page-window-layout.mjs");
     await finishWith({ engine, version: browser.version, url: pageUrl, size: windowSize.join("x"),

@@ -7,7 +7,7 @@
 // its line, a click on the message going to it, the edit surviving a
 // reload of the page, Revert. Writes OUT_DIR/slider-NAME.png (the picture
 // after each slider) and OUT_DIR/broken.png (after the typo), and prints
-// one JSON object: { sliders: [{ name, value, drawn }], saved, broken, clicked,
+// one JSON object: { sliders: [{ name, value, drawn }], warnings, saved, broken, clicked,
 // reloaded, restored, untyped, selection }, each of broken to restored the page's state then
 // (exit, errors, value, diagnostics, the editor's file, cursor line,
 // marked lines and messages, text).
@@ -38,6 +38,18 @@ const canvasAt = await page.evaluate(`(() => { const r = document.getElementById
 await frames();
 
 const result = { sliders: [] };
+// The script's own warnings in the editor (SCRIPT shown): said quietly, a
+// mark each and no open message; a click on the first mark opens its
+// message, a second closes it (result.warnings).
+const warningState = () => page.evaluate(`({ marks: document.querySelectorAll(".glimmer-mark-warning").length,
+  open: [...document.querySelectorAll(".glimmer-message-warning")].map((e) => e.textContent) })`);
+await page.evaluate(`glimmerPage.editor().open(${JSON.stringify(script)})`);
+await frames();
+result.warnings = { opened: await warningState() };
+await page.evaluate(`document.querySelector(".glimmer-mark-warning") && document.querySelector(".glimmer-mark-warning").click()`);
+result.warnings.clicked = await warningState();
+await page.evaluate(`document.querySelector(".glimmer-mark-warning") && document.querySelector(".glimmer-mark-warning").click()`);
+result.warnings.again = await warningState();
 for (const drag of drags) {
   const [name, fraction] = drag.split("=");
   const [x, y, w, h] = await page.evaluate(`glimmerPage.control(${JSON.stringify(name)})`);

@@ -44,6 +44,8 @@ for (let i = 0; i < 600 && !result; ++i) {
     const v = document.getElementById("verdict");
     if (!v.dataset.exit || v.textContent === ${JSON.stringify(before)} ||
         !/^(yours|refused|[^:]*\\.glib:)/.test(v.textContent)) return null;
+    // A drawn picture's PNG is made a frame after it is shown.
+    if (v.dataset.exit === "0" && v.textContent.endsWith(": drawn") && !document.getElementById("picture").dataset.png) return null;
     return { exit: Number(v.dataset.exit), verdict: v.textContent,
              diagnostics: document.getElementById("diagnostics").textContent,
              png: document.getElementById("picture").dataset.png || "" };

@@ -8,6 +8,7 @@
 // closed }, each the page's state then: the script chosen (select's value),
 // the verdict, the file on show in the editor and whether its text holds
 // the comment, each slider's value (glimmerPage.value), the scripts listed,
+// the watch on (a watch of line 12 of SHADER is started before the reload),
 // and the picture (a data URL).
 //   NODE_PATH=/usr/share/nodejs node tools/page-reload.mjs PAGE_URL FOLDER SCRIPT SHADER NAME=FRACTION...
 import { clickAt, openPage, sleep } from "./cdp-page.mjs";
@@ -31,7 +32,7 @@ const state = () => page.evaluate(`(() => {
     shown: ed.shown(), typed: ed.cm.getValue().includes(${JSON.stringify(comment)}), values,
     scripts: [...document.getElementById("script").options].map((o) => o.value),
     labels: [...document.getElementById("script").options].map((o) => o.text),
-    picture: glimmerPage.snapshot() };
+    watch: glimmerPage.watch().summary ? glimmerPage.watch().spec : "", picture: glimmerPage.snapshot() };
 })()`);
 const waitFor = async (condition, what) => {
   for (let i = 0; i < 300; ++i) {
@@ -71,6 +72,9 @@ await page.evaluate(`[...document.querySelectorAll("#tabs button")].find((b) => 
   glimmerPage.editor().cm.setCursor({ line: glimmerPage.editor().cm.lineCount() - 1, ch: 10000 }); glimmerPage.editor().cm.focus()`);
 await page.send("Input.insertText", { text: "\n" + comment + "\n" });
 await sleep(1200);  // the editor's pause after typing, the reload of the script
+// A watch on (as the editor's Watch button starts it), kept with the values.
+await page.evaluate(`glimmerPage.command("watch ${shader.split("/").pop()}:12 rgbblur")`);
+await sleep(600);
 const before = await state();
 
 // The page reloaded.

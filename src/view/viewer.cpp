@@ -57,7 +57,7 @@ public:
         std::cerr << errors << warnings;
         if (!s_.errors.empty() || !warnings.empty())
             std::cerr << fmt::format("{} error{}, {} warning{}{}\n", s_.errors.size(), s_.errors.size() == 1 ? "" : "s",
-                                     s_.warnings.size(), s_.warnings.size() == 1 ? "" : "s",
+                                     warningCount(s_), warningCount(s_) == 1 ? "" : "s",
                                      repeated ? fmt::format(" ({} shown before)", repeated) : "");
     }
 
@@ -133,7 +133,10 @@ public:
                 // benchmark's `frames` must not shorten the slices it measures).
                 if (!c || !c->onlyAsks()) lastInput_ = now;
             }
-            if (quit_) break;
+            if (quit_) {
+                core_.noteHealth(*this, true);  // a script that quits at once still hears of a NaN
+                break;
+            }
             if (!draw && busy) {
                 // Nothing asked for the window: draw more of the frame, and
                 // show how far it got now and then.
@@ -196,7 +199,7 @@ public:
         }
         // A frame may be under way: what is saved is the finished picture.
         Image img = core_.savedPicture(hardcopy);
-        core_.noteHealth(*this);
+        core_.noteHealth(*this, true);
         if (img.empty()) return;
         std::string why;
         // The name as typed may hold ESC (issue 37): echoed escaped.

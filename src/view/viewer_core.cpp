@@ -77,6 +77,11 @@ bool ViewerCore::load(int w, int h, Diagnostics& diags, SourceTexts& sources, Pl
     adoptScript(s_, std::move(next), std::move(renderer), source_.sets, diags);
     drawing_.reset();  // its passes belong to the old plan
     firstFrame_ = true;
+    // The targets' health (noteHealth) is read back half a second after a
+    // load, not in its first frames: every float target read back at once
+    // waited for the whole picture on the GPU before it was shown (issue
+    // 39: 7 read-backs in the page's first frames in Chromium).
+    lastHealth_ = Clock::now();
     std::string said;
     if (s_.watch) startWatchNow(said);  // the edited shader, watched again
     return true;

@@ -166,9 +166,12 @@ public:
     void setKeyHint(std::string hint) { s_.keyHint = std::move(hint); }
     void setStatus(std::string status) { s_.status = std::move(status); }
     // The numeric health (pipeline/numeric_health.h) of the last finished
-    // picture, measured at most twice a second (it reads every target back);
-    // its report printed through the host when it changes.
-    void noteHealth(ViewerHost& host);
+    // picture, measured at most twice a second and not in a load's first
+    // half second (it reads every target back); its report printed through
+    // the host when it changes. `now`: measured whatever the time, if the
+    // picture has not been (a save reads the picture back anyway; a quit
+    // must not lose the report).
+    void noteHealth(ViewerHost& host, bool now = false);
 
     // Draws: starts a frame of the passes that changed since the last one
     // started (a change while a frame is under way replaces it and keeps

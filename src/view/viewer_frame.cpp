@@ -130,9 +130,10 @@ void ViewerCore::advance(double seconds) {
     if (s_.playing && seconds > 0) s_.time += seconds;
 }
 
-void ViewerCore::noteHealth(ViewerHost& host) {
+void ViewerCore::noteHealth(ViewerHost& host, bool right) {
     const auto now = Clock::now();
-    if (!s_.good || !s_.renderer || pictureVersion_ == healthVersion_ || now - lastHealth_ < std::chrono::milliseconds(500))
+    if (!s_.good || !s_.renderer || pictureVersion_ == healthVersion_ ||
+        (!right && now - lastHealth_ < std::chrono::milliseconds(500)))
         return;
     healthVersion_ = pictureVersion_;
     lastHealth_ = now;

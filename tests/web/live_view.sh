@@ -43,6 +43,15 @@ for pair in "slider-uAdd.png|live_add.png|uAdd=$add" "slider-uHalfSize.png|live_
   fi
 done
 # A typo typed and taken back leaves no kept edit (issue 39: it counted as one).
+# The seed's own warnings (its degenerate Ortho...) are said once, quietly:
+# in the editor a mark on the line and no open message, opened by a click
+# on the mark and closed by another (issue 39: three yellow blocks).
+python3 -c '
+import json, sys
+w = json.loads(sys.argv[1])["warnings"]
+sys.exit(0 if w["opened"]["marks"] >= 1 and w["opened"]["open"] == [] and len(w["clicked"]["open"]) == 1
+         and w["clicked"]["open"][0].startswith("warning: ") and w["again"]["open"] == [] else 1)' "$live" 2>/dev/null
+tally $? "the script's warnings in the editor must be marks with no message open until clicked: $(field 'warnings')"
 [ "$(field 'untyped["kept"]')" = "0" ]
 tally $? "a typo typed and taken back is still kept as an edit: $(field 'untyped')"
 # Selected text in the editor is readable (issue 39: it was light on light):

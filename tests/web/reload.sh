@@ -40,6 +40,9 @@ check_reload "after the reload, the same script must be chosen and drawn" \
 check_reload "after the reload, the same file must be open in the editor, with the typed text" \
   'after["shown"] == before["shown"] and after["typed"]'
 check_reload "after the reload, every slider must have its value" 'after["values"] == before["values"]'
+check_reload "after the reload, the watch must be on again (issue 39)" \
+  'before["watch"] == "bloom.frag:12 rgbblur" and after["watch"] == before["watch"]'
+check_reload "Close folder: the lesson's own seed has no watch (the watch was the folder's script's)" 'closed["watch"] == ""'
 check_reload "after the reload, the picture must be the same" \
   'after["picture"].startswith("data:image/png") and after["picture"] == before["picture"]'
 check_reload "Close folder must go back to the lesson's own scripts, the seed at its own values" \

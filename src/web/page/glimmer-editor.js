@@ -141,7 +141,20 @@ globalThis.createGlimmerEditor = ({ element, tabs, note, readFile, writeFile, on
       box.className = "glimmer-message glimmer-message-" + m.severity;
       box.textContent = `${m.severity}: ${m.message}`;
       // in the text's column: the editor wraps its lines, so the message wraps there too
-      widgets.push(cm.addLineWidget(line, box, { coverGutter: false }));
+      const open = () => { const w = cm.addLineWidget(line, box, { coverGutter: false }); widgets.push(w); return w; };
+      // An error's message is open under its line. A warning's is said
+      // quietly: the line tinted, its mark in the gutter, its text there on
+      // hover and in the list below; a click on the mark opens or closes it
+      // (issue 39: the seed's own warnings opened as three yellow blocks).
+      if (m.severity === "error") open();
+      else {
+        let shownBox = null;
+        dot.style.cursor = "pointer";
+        dot.onclick = () => {
+          if (shownBox) { shownBox.clear(); widgets = widgets.filter((w) => w !== shownBox); shownBox = null; }
+          else shownBox = open();
+        };
+      }
     }
   };
 

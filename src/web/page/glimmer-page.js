@@ -23,7 +23,11 @@
 "use strict";
 // What it starts from (glimmer-lesson.js, loaded before it): the lesson,
 // the kept folder and the module's options, each a promise.
-Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoaded, folderKept]).then(([glimmer, loaded, kept]) => {
+// Each start's own mark (data-module-ms, data-lesson-ms, data-kept-ms: ms
+// since the page began to load), so the first picture's time can be split.
+const marked = (name, promise) => promise.then((v) => { document.body.dataset[name] = performance.now().toFixed(0); return v; });
+Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(options))), marked("lessonMs", lessonLoaded),
+             marked("keptMs", folderKept)]).then(([glimmer, loaded, kept]) => {
   // Since the page began to load: the module fetched, compiled and started
   // (PERFORMANCE.md splits the first picture's time at this mark).
   document.body.dataset.moduleReadyMs = performance.now().toFixed(0);
@@ -263,16 +267,29 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
   try { state = JSON.parse(localStorage.getItem(stateName)) || {}; } catch {}
   if (typeof state !== "object" || Array.isArray(state)) state = {};
   if (typeof state.values !== "object" || state.values === null) state.values = {};
+  // Per script, the watch on (its `watch` command's FILE:LINE EXPRESSION):
+  // a reload brings it back, as it brings the sliders (issue 39).
+  if (typeof state.watches !== "object" || state.watches === null) state.watches = {};
   const keepState = () => { try { localStorage.setItem(stateName, JSON.stringify(state)); } catch {} };
   const viewSets = glimmer.cwrap("glimmer_view_sets", "string", []);
   let lastKept = 0;
   const keepValues = () => {
     const key = live.root + ":" + live.path, sets = viewSets();
-    if (!sets || state.values[key] === sets) return;
-    delete state.values[key];
-    state.values[key] = sets;  // the newest last: at most 50 scripts' values are kept
-    for (const old of Object.keys(state.values).slice(0, -50)) delete state.values[old];
-    keepState();
+    const [spec = "", summary = ""] = glimmer.UTF8ToString(glimmer._glimmer_view_watch()).split("\t");
+    const watching = summary ? spec : "";  // a spec with no summary: stopped, or refused
+    let changed = false;
+    if ((state.watches[key] || "") !== watching) {
+      if (watching) state.watches[key] = watching; else delete state.watches[key];
+      for (const old of Object.keys(state.watches).slice(0, -50)) delete state.watches[old];
+      changed = true;
+    }
+    if (sets && state.values[key] !== sets) {
+      delete state.values[key];
+      state.values[key] = sets;  // the newest last: at most 50 scripts' values are kept
+      for (const old of Object.keys(state.values).slice(0, -50)) delete state.values[old];
+      changed = true;
+    }
+    if (changed) keepState();
   };
   // The canvas no taller than what the page shows of its column, less the
   // verdict and the start of the first error below it: a long panel (a
@@ -332,22 +349,35 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
   // `values`: sets kept from an earlier visit ("NAME=V;..."), each given back
   // through glimmer_view_set before the first frame (one the script no
   // longer takes is dropped, never an error).
+  let keeping = Promise.resolve();  // the live view's picture copied (runView): the page is ready after it
   const runView = (value, width, height, sets, values = "") => {
     const [root, path] = locate(value);
     FS.chdir(root);
     const wasLive = live;
+    // The copy of the earlier picture goes; this one's comes a frame after
+    // it is shown (below), so a reader of data-png waits for it.
+    delete picture.dataset.png;
     const opening = performance.now();
+    if (!document.body.dataset.firstOpenAtMs) document.body.dataset.firstOpenAtMs = opening.toFixed(0);
     const exit = viewOpen(path, width, height, sets);
     if (!document.body.dataset.firstOpenMs) document.body.dataset.firstOpenMs = (performance.now() - opening).toFixed(0);
     if (exit === 0) for (const set of values.split(";").filter(Boolean)) viewSet(set);
     report(path, exit, "drawn");
     const files = glimmer.UTF8ToString(glimmer._glimmer_view_files()).split("\n").filter(Boolean);
-    if (files.length) editor.setFiles(root, files);
-    editor.mark(glimmer.UTF8ToString(glimmer._glimmer_view_messages()).split("\n").filter(Boolean).map((l) => {
+    const marks = glimmer.UTF8ToString(glimmer._glimmer_view_messages()).split("\n").filter(Boolean).map((l) => {
       const [severity, file, line, col, message] = l.split("\t");
       return { severity, file, line: Number(line), col: Number(col), message };
-    }));
+    });
+    const fillEditor = () => {
+      if (files.length) editor.setFiles(root, files);
+      editor.mark(marks);
+    };
     const shows = exit === 0 || (exit === 1 && glimmer._glimmer_view_snapshot());
+    // The page's first picture comes before the editor's files (about 100 ms
+    // of CodeMirror on this machine's Chromium, issue 39); later opens, and
+    // a script that shows nothing, fill the editor at once.
+    const first = exit === 0 && !document.body.dataset.firstPictureMs;
+    if (!first) fillEditor();
     live = shows ? { root, path, width, height } : null;
     if (shows && restoring) { state.script = root + ":" + path; keepState(); }
     save.disabled = !shows;
@@ -363,12 +393,24 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     lastFit = -1e9;
     fitCanvas(performance.now());
     const framing = performance.now();
+    if (!document.body.dataset.firstFramesAtMs) document.body.dataset.firstFramesAtMs = framing.toFixed(0);
     glimmer._glimmer_view_frame(0);  // the first picture, then the canvas at the layout's size
     sizeCanvas(glimmer._glimmer_view_width(), glimmer._glimmer_view_height());
     glimmer._glimmer_view_frame(0);
     if (!document.body.dataset.firstFramesMs) document.body.dataset.firstFramesMs = (performance.now() - framing).toFixed(0);
-    if (glimmer._glimmer_view_snapshot()) keepPicture();
-    if (exit === 0 && !document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
+    // The picture is on the canvas; the browser shows it in its next frame
+    // (the first picture's mark: that frame's callback). The copy a reload,
+    // Save and the tests read (a read-back, a PNG) is made after that frame,
+    // not before it, where it held the first picture back (issue 39).
+    const shown = live;
+    keeping = new Promise((resolve) => requestAnimationFrame(() => {
+      if (first && !document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
+      setTimeout(() => {
+        if (first) fillEditor();
+        if (live === shown && glimmer._glimmer_view_snapshot()) keepPicture();
+        resolve();
+      }, 0);
+    }));
     if (!wasLive) { lastTick = 0; requestAnimationFrame(tick); }
     return exit;
   };
@@ -590,7 +632,12 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     if ([...select.options].some((o) => o.value === state.script)) select.value = state.script;
     else if (!lesson && seed) select.value = seed.value;
     runView(select.value, 512, 512, "", typeof state.values[select.value] === "string" ? state.values[select.value] : "");
-    if (wasShown && [...document.querySelectorAll("#tabs button")].some((b) => b.dataset.path === wasShown)) editor.open(wasShown);
+    const watched = state.watches[select.value];
+    if (live && typeof watched === "string" && watched) viewCommand("watch " + watched.slice(0, 2000));
+    // The editor's tabs come with the files, after the first picture.
+    keeping.then(() => {
+      if (wasShown && [...document.querySelectorAll("#tabs button")].some((b) => b.dataset.path === wasShown)) editor.open(wasShown);
+    });
   }
   if (query.has("present")) present(true);
   if (query.get("check")) runCheck(query.get("check"));
@@ -606,7 +653,7 @@ Promise.all([moduleOptions.then((options) => createGlimmer(options)), lessonLoad
     const [w, h] = (query.get("size") || "512x512").split("x").map(Number);
     runView(query.get("view"), w, h, query.get("set") || "");
   }
-  document.body.dataset.ready = "1";
+  keeping.then(() => { document.body.dataset.ready = "1"; });
 }).catch((e) => {
   // Said, not left as a blank page (from disk, the module's .wasm needs
   // --allow-file-access-from-files or a packed lesson).
