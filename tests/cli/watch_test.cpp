@@ -207,6 +207,8 @@ TEST(CliWatch, IntsUintsAndBoolsAreWatchedAndSaidAsWhatTheyAre) {
         {"superblur.frag:16:bvec2(uHalfSize > 9, uHalfSize > 3)",
          "bvec2 over 512x512: range 0 .. 1 (its own); x 0 .. 0, y 1 .. 1"},
         {"superblur.frag:16:uvec3(1u, 2u, 3u)", "uvec3 over 512x512: range 1 .. 3 (its own); x 1 .. 1, y 2 .. 2, z 3 .. 3"},
+        // A scalar uint too (issue 40: its component count could be 0 and no test saw it).
+        {"superblur.frag:16:uint(uHalfSize) + 2u", "uint over 512x512: range 7 .. 7 (its own)"},
     };
     TempDir dir;
     for (const auto& [watch, said] : cases) {
