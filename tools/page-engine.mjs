@@ -47,6 +47,7 @@ import { mkdtempSync, rmSync, writeFileSync } from "node:fs";
 import { createServer } from "node:net";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
+import { until as waitUntil } from "./page-wait.mjs";
 
 const [engine, pageUrl, outDir, mode] = process.argv.slice(2);
 // --layout=WxH: a real window of that outer size (see tools/page-window-layout.mjs).
@@ -273,16 +274,12 @@ try {
   if (mode === "--serve") await serveJourney();
   if (mode && mode.startsWith("--first=")) {
     await browser.go(pageUrl);
-    let seen = {};
-    for (const end = Date.now() + 30000; Date.now() < end; await sleep(100)) {
-      seen = await browser.evaluate(`(() => { const d = document.body ? document.body.dataset : {};
+    const seen = await waitUntil(browser.evaluate, `(() => { const d = document.body ? document.body.dataset : {};
         return { ready: d.ready || "", verdict: (document.getElementById("verdict") || {}).textContent || "",
           firstPictureMs: Number(d.firstPictureMs), moduleReadyMs: Number(d.moduleReadyMs),
           firstOpenMs: Number(d.firstOpenMs), firstFramesMs: Number(d.firstFramesMs), moduleMs: Number(d.moduleMs),
           lessonMs: Number(d.lessonMs), keptMs: Number(d.keptMs), firstOpenAtMs: Number(d.firstOpenAtMs),
-          firstFramesAtMs: Number(d.firstFramesAtMs) }; })()`);
-      if (seen.ready === "1" && seen.firstPictureMs > 0) break;
-    }
+          firstFramesAtMs: Number(d.firstFramesAtMs) }; })()`, 30000, (s) => s.ready === "1" && s.firstPictureMs > 0);
     await finishWith({ engine, version: browser.version, url: pageUrl, size: windowSize.join("x"), ...seen });
   }
   if (windowSize) {
@@ -312,13 +309,10 @@ const savePng = (name, dataUrl) => {
 if (mode === "--opening") {
   const evaluate = browser.evaluate;
   await browser.go(pageUrl);
-  let seen = null;
-  for (const end = Date.now() + 20000; Date.now() < end; await sleep(200)) {
-    seen = await browser.evaluate(`(() => { const box = document.getElementById("cannot-start");
+  const seen = await waitUntil(browser.evaluate, `(() => { const box = document.getElementById("cannot-start");
       return { ready: document.body.dataset.ready || "", verdict: document.getElementById("verdict").textContent,
-        cannotStart: box ? { shown: !box.hidden, fromDisk: box.dataset.fromDisk || "", text: box.textContent } : null }; })()`);
-    if (seen.ready === "1" || (seen.cannotStart && seen.cannotStart.shown)) break;
-  }
+        cannotStart: box ? { shown: !box.hidden, fromDisk: box.dataset.fromDisk || "", text: box.textContent } : null }; })()`,
+    20000, (s) => s.ready === "1" || (s.cannotStart && s.cannotStart.shown));
   if (seen.ready === "1") savePng("opening.png", await evaluate("glimmerPage.snapshot()"));
   console.log(JSON.stringify({ engine, version: browser.version, url: pageUrl, ...seen }));
   clearTimeout(watchdog);
@@ -357,11 +351,7 @@ const state = () => evaluate(`(() => {
     file: glimmerPage.readFile("/lesson/shaders/bloom.frag"),
     kept: Object.keys(localStorage).filter((k) => k.startsWith("glimmer-draft")).length };
 })()`);
-const until = async (condition, ms = 8000) => {
-  for (const end = Date.now() + ms; Date.now() < end; await sleep(100))
-    if (await evaluate(condition)) return true;
-  return false;
-};
+const until = async (condition, ms = 8000) => Boolean(await waitUntil(evaluate, condition, ms));
 const result = { engine, version: browser.version, url };
 
 try {

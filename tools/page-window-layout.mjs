@@ -10,7 +10,7 @@
 import { writeFileSync } from "node:fs";
 import { join } from "node:path";
 
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+import { kPageReady, sleep, until } from "./page-wait.mjs";
 
 // The panel's controls a student needs in view: the sliders, and with a
 // watch on its buttons (the ones at the right end of their rows).
@@ -39,8 +39,7 @@ export async function measureLayout(browser, pageUrl, outDir, [w, h]) {
   const { evaluate } = browser;
   const shoot = async (name) => { try { writeFileSync(join(outDir, `${w}x${h}-${name}.png`), await browser.screenshot()); } catch {} };
   await browser.go(`${pageUrl}?view=${encodeURIComponent("scripts/bloom.glib")}`);
-  for (const end = Date.now() + 60000; Date.now() < end; await sleep(100))
-    if (await evaluate(`document.body && document.body.dataset.ready === "1"`)) break;
+  await until(evaluate, kPageReady, 60000);
   await sleep(800);  // the panel settles its width over a few frames
   const open = await measure(evaluate);
   await shoot("open");

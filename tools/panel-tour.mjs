@@ -9,7 +9,7 @@ import { readFileSync } from "node:fs";
 import { dirname, join } from "node:path";
 import { fileURLToPath } from "node:url";
 
-const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+import { kPageReady, sleep, until } from "./page-wait.mjs";
 const tablePath = join(dirname(fileURLToPath(import.meta.url)), "..", "tests", "data", "panel_tour.txt");
 
 export function readTour(text = readFileSync(tablePath, "utf8")) {
@@ -125,10 +125,7 @@ export async function runTour(browser, pageUrl) {
 
   for (const section of readTour()) {
     await browser.go(`${pageUrl}?view=${encodeURIComponent(section.script)}`);
-    let ready = false;
-    for (const end = Date.now() + 60000; Date.now() < end && !ready; await sleep(100))
-      ready = await evaluate(`document.body && document.body.dataset.ready === "1"`);
-    if (!ready) { failures.push(`${section.script}: the page was not ready in 60 s`); continue; }
+    if (!(await until(evaluate, kPageReady, 60000))) { failures.push(`${section.script}: the page was not ready in 60 s`); continue; }
     // The page's downloads (Save PNG, Save at size) caught, not made: their names and pictures kept.
     await evaluate(`(() => { globalThis.__tourSaved = [];
       HTMLAnchorElement.prototype.click = function () { globalThis.__tourSaved.push({ name: this.download, href: this.href }); };

@@ -56,9 +56,11 @@ check "every time must be positive and its median between its fastest and slowes
 # until 25 ms have passed (web_tradeoff.cpp kMinRun) and reads as the time
 # per render. So a method whose every run took under 12 ms a render rendered
 # twice or more each run, and the run with the most renders (rendersPerRun)
-# lasted 25 ms: its time a render, at most the slowest, times them is 25 or more.
+# lasted 25 ms: its time a render, at most the slowest, times them is 25 or more
+# (which a method under 25 ms a render, one at least even on a loaded machine,
+# fails when a run is one render).
 check "a run must render until 25 ms have passed: twice or more under 12 ms a render, the longest run 25 ms or more" \
-  'all(r["rendersPerRun"] >= 2 for r in p["rows"] if r["max"] < 12) and any(r["max"] < 12 for r in p["rows"]) and all(r["rendersPerRun"] * r["max"] >= 25 for r in p["rows"])'
+  'all(r["rendersPerRun"] >= 2 for r in p["rows"] if r["max"] < 12) and all(r["rendersPerRun"] * r["max"] >= 25 for r in p["rows"]) and any(r["max"] < 25 for r in p["rows"])'
 check "superblur h11 (529 taps) must take more than 5 times superblur h1 (9 taps): the runs are timed, not just queued" \
   'page["superblur h11"]["ms"] > 5 * page["superblur h1"]["ms"]'
 check "a fastest method must be named, among those within 40 dB of their Gaussian" \
