@@ -207,8 +207,22 @@ TEST(CliWatch, IntsUintsAndBoolsAreWatchedAndSaidAsWhatTheyAre) {
         {"superblur.frag:16:bvec2(uHalfSize > 9, uHalfSize > 3)",
          "bvec2 over 512x512: range 0 .. 1 (its own); x 0 .. 0, y 1 .. 1"},
         {"superblur.frag:16:uvec3(1u, 2u, 3u)", "uvec3 over 512x512: range 1 .. 3 (its own); x 1 .. 1, y 2 .. 2, z 3 .. 3"},
-        // A scalar uint too (issue 40: its component count could be 0 and no test saw it).
+        // Every other overload of the capture (shader/watch_rewrite.cpp), each with its component
+        // count and kind (issue 40: a scalar uint's count 0 and an ivec4's 5 passed every test).
         {"superblur.frag:16:uint(uHalfSize) + 2u", "uint over 512x512: range 7 .. 7 (its own)"},
+        {"superblur.frag:16:ivec3(1, 2, 3)", "ivec3 over 512x512: range 1 .. 3 (its own); x 1 .. 1, y 2 .. 2, z 3 .. 3"},
+        {"superblur.frag:16:ivec4(1, 2, 3, 4)",
+         "ivec4 over 512x512: range 1 .. 4 (its own); x 1 .. 1, y 2 .. 2, z 3 .. 3, w 4 .. 4"},
+        {"superblur.frag:16:uvec2(1u, 2u)", "uvec2 over 512x512: range 1 .. 2 (its own); x 1 .. 1, y 2 .. 2"},
+        {"superblur.frag:16:uvec4(1u, 2u, 3u, 4u)",
+         "uvec4 over 512x512: range 1 .. 4 (its own); x 1 .. 1, y 2 .. 2, z 3 .. 3, w 4 .. 4"},
+        {"superblur.frag:16:bvec3(true, false, true)",
+         "bvec3 over 512x512: range 0 .. 1 (its own); x 1 .. 1, y 0 .. 0, z 1 .. 1"},
+        {"superblur.frag:16:bvec4(true, false, true, false)",
+         "bvec4 over 512x512: range 0 .. 1 (its own); x 1 .. 1, y 0 .. 0, z 1 .. 1, w 0 .. 0"},
+        {"superblur.frag:16:vec2(0.5, 2.)", "vec2 over 512x512: range 0.5 .. 2 (its own); x 0.5 .. 0.5, y 2 .. 2"},
+        {"superblur.frag:16:vec4(1., 2., 3., 4.)",
+         "vec4 over 512x512: range 1 .. 4 (its own); x 1 .. 1, y 2 .. 2, z 3 .. 3, w 4 .. 4"},
     };
     TempDir dir;
     for (const auto& [watch, said] : cases) {
