@@ -7,7 +7,7 @@
 // its line, a click on the message going to it, the edit surviving a
 // reload of the page, Revert. Writes OUT_DIR/slider-NAME.png (the picture
 // after each slider) and OUT_DIR/broken.png (after the typo), and prints
-// one JSON object: { sliders: [{ name, value, drawn }], warnings, saved, broken, clicked,
+// one JSON object: { sliders: [{ name, value, drawn }], warnings, saved, broken, errorLine, clicked,
 // reloaded, restored, untyped, selection }, each of broken to restored the page's state then
 // (exit, errors, value, diagnostics, the editor's file, cursor line,
 // marked lines and messages, text).
@@ -128,6 +128,20 @@ result.broken = await state();
 savePng("broken.png", await page.evaluate("glimmerPage.snapshot()"));
 const shot = await page.send("Page.captureScreenshot", { format: "png" });
 writeFileSync(join(outDir, "broken-page.png"), Buffer.from(shot.result.data, "base64"));
+
+// The error's line in the panel clicked with the mouse, as in the window
+// (ViewerControls.ClickingAnError...): the panel copies its place and says
+// so in its status (result.errorLine: the status, as `panel` gives it).
+{
+  const [x, y, w, h] = await page.evaluate(`glimmerPage.control("Error 1")`);
+  if (w === undefined) result.errorLine = { status: "no control 'Error 1' in the panel" };
+  else {
+    await clickAt(page, { x: canvasAt[0] + x + Math.min(40, w / 2), y: canvasAt[1] + y + Math.min(8, h / 2) }, frames);
+    const panel = await page.evaluate(`glimmerPage.command("panel")`);
+    const status = (/(?:^| )status=(\S*)/.exec(panel) || [])[1] || "";
+    result.errorLine = { status: decodeURIComponent(status) };
+  }
+}
 
 // Clicking the error in the diagnostics goes to it (from another file on show).
 await page.evaluate(`(() => { const ed = glimmerPage.editor(); ed.open(${JSON.stringify(script)}, 1, 1);

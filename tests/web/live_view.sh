@@ -52,6 +52,10 @@ w = json.loads(sys.argv[1])["warnings"]
 sys.exit(0 if w["opened"]["marks"] >= 1 and w["opened"]["open"] == [] and len(w["clicked"]["open"]) == 1
          and w["clicked"]["open"][0].startswith("warning: ") and w["again"]["open"] == [] else 1)' "$live" 2>/dev/null
 tally $? "the script's warnings in the editor must be marks with no message open until clicked: $(field 'warnings')"
+# The panel's error line clicked with the mouse copies its place, as in the
+# window (issue 39: the one control the shared panel tour leaves out).
+[[ "$(field 'errorLine["status"]')" == "copied shaders/bloom.frag:13"* ]]
+tally $? "clicking the panel's error line must copy its place: $(field 'errorLine')"
 [ "$(field 'untyped["kept"]')" = "0" ]
 tally $? "a typo typed and taken back is still kept as an edit: $(field 'untyped')"
 # Selected text in the editor is readable (issue 39: it was light on light):
