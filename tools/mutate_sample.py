@@ -65,6 +65,9 @@ EQUIVALENT = {
     "src/gl/renderer_internal.h:46:e3287010": "a watch Level's height is set (watch_gpu.cpp) before the Level is stored or read",
     "src/gl/texel_rate.cpp:19:bdeed1cf": "for gl_VertexID 0, 1, 2 (one triangle), (id << 1) & 3 and (id << 1) & 2 are both 0, 2, 0",
     "src/plan/plan_textures.cpp:116:7844c03b": "both callers of textureHead set isFile = false before the call",
+    "src/gl/renderer_internal.h:31:8fc5e73c": "a Target's depth only decides a depth clear (on a framebuffer with no depth "
+                                              "attachment, a no-op by the GL spec) and a glDeleteRenderbuffers (which "
+                                              "ignores a name that is no renderbuffer): 0 and -1 draw and fail alike",
     "src/shader/watch_rewrite.cpp:234:d57e2336": "an ivec4's count 5 is written as 5 * 0.25 into an 8-bit channel of the "
                                                  "info target, which saturates at 1, the bytes of 4 (every reader clamps to 4 too)",
     "src/shader/compat_rewrite.cpp:56:ee2d5297": "definesOf only ever reads kGstapPrelude or \"\", every line of which is "
