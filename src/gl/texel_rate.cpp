@@ -5,6 +5,8 @@
 // (issue 13: on the H100 a 9-tap pass sat exactly at 31.7 Gtexel/s when
 // hand-written, Glimmer's did not). Hand-written GL, one full-screen
 // triangle, no script, so it measures the hardware, not the interpreter.
+// Held by test_render's TexelRate case to renderer.h's limits (issue 40:
+// src/gl scored 10 of 14 in the first sampled mutants; docs/RELIABILITY.md).
 #include "gl/renderer_internal.h"
 
 #include "util/pcg32.h"

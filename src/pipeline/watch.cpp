@@ -1,3 +1,8 @@
+// The watch's steps (pipeline/watch.h says what each does). Held by
+// test_cli's CliWatch cases to exact summaries and refusals: a range whose
+// bounds are not finite numbers is refused whole, never read as the range
+// held before (issue 40: src/pipeline scored 2 of 3 in the first sampled
+// mutants; docs/RELIABILITY.md).
 #include "pipeline/watch.h"
 
 #include <algorithm>

@@ -1,3 +1,7 @@
+// The GLSL lexer (shader/glsl_lexer.h). Held by test_shader's lexer cases
+// and, for a directive's end, by test_cli's
+// CliWatch.ABlockCommentAfterADivisionInADefineEndsWhereItsStarSlashIs: a
+// '/' of division is no comment (issue 40; docs/RELIABILITY.md).
 #include "shader/glsl_lexer.h"
 
 #include <algorithm>

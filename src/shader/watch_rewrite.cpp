@@ -1,3 +1,7 @@
+// The watch's rewrite of a shader (shader/watch_rewrite.h). Held by
+// test_cli's CliWatch.IntsUintsAndBoolsAreWatchedAndSaidAsWhatTheyAre to
+// every overload of the capture, each type said with its components (issue
+// 40: a scalar uint's count was 0 and no test watched one).
 #include "shader/watch_rewrite.h"
 
 #include <algorithm>
