@@ -155,7 +155,10 @@ TEST(ViewerWatch, ThePanelsWatchControlsClickedDoWhatTheirCommandsDo) {
         double cx = 0, cy = 0, w = 0, h = 0;
         std::istringstream in(log.substr(log.rfind(said) + said.size()));
         if (!(in >> cx >> cy >> w >> h)) return false;
-        xdotool(*x, fmt::format("mousemove --window {} {} {} sleep 0.2 click 1 sleep 0.3", x->window,
+        // Press and release a few frames apart, and a pause after: ImGui 1.86 reads the button per
+        // frame, and a loaded machine's slow frame lost a quick click (the field then never took
+        // the typed text, which went to the window's keys: three reloads).
+        xdotool(*x, fmt::format("mousemove --window {} {} {} sleep 0.2 mousedown 1 sleep 0.3 mouseup 1 sleep 0.5", x->window,
                                 int(cx + fraction * w), int(cy + h / 2)));
         return true;
     };
