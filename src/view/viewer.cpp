@@ -55,9 +55,10 @@ public:
             else ++repeated;
         }
         std::cerr << errors << warnings;
+        const size_t counted = warningCount(s_);
         if (!s_.errors.empty() || !warnings.empty())
             std::cerr << fmt::format("{} error{}, {} warning{}{}\n", s_.errors.size(), s_.errors.size() == 1 ? "" : "s",
-                                     warningCount(s_), warningCount(s_) == 1 ? "" : "s",
+                                     counted, counted == 1 ? "" : "s",
                                      repeated ? fmt::format(" ({} shown before)", repeated) : "");
     }
 

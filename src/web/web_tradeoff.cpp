@@ -84,8 +84,8 @@ std::string jsonString(const std::string& s) {
 // Finite numbers only: PSNR of identical pictures is infinite, which JSON cannot say.
 std::string jsonNumber(double v) { return std::isfinite(v) ? fmt::format("{:.6g}", v) : "null"; }
 
-// {"renderer", "width", "height", "format", "repeat", "methods": [{"method",
-// "family", "taps", "ms", "min", "max", "runs", "sigma", "numerical":
+// {"renderer", "width", "height", "format", "repeat", "min_run_ms", "methods": [{"method",
+// "family", "taps", "ms", "min", "max", "runs", "renders_per_run", "sigma", "numerical":
 // {"rmse", "psnr", "max", "over_one_step"}, "model": {...}, "healthy"}],
 // "fastest": {"methods": [...], "clear_winner", "candidates"}}: the
 // desktop's PREFIX.json, less what the page does not measure (the floor).
@@ -96,10 +96,11 @@ std::string rowsJson() {
                            jsonNumber(e.psnr), jsonNumber(e.maxAbs), e.pixelsOverOneStep);
     };
     std::ostringstream out;
-    out << fmt::format(R"({{"renderer": {}, "width": {}, "height": {}, "format": {}, "repeat": {}, "methods": [)",
+    out << fmt::format(R"({{"renderer": {}, "width": {}, "height": {}, "format": {}, "repeat": {}, "min_run_ms": {}, )"
+                       R"("methods": [)",
                        jsonString(run->rendererName), run->input.image.width,
                        run->input.image.height, jsonString(textureFormatName(run->settings.format)),
-                       run->settings.repeat);
+                       run->settings.repeat, run->settings.minRun.count());
     for (std::size_t i = 0; i < run->rows.size(); ++i) {
         const TradeoffRow& r = run->rows[i];
         out << (i ? ", " : "")

@@ -272,24 +272,26 @@ Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(op
   if (typeof state.watches !== "object" || state.watches === null) state.watches = {};
   const keepState = () => { try { localStorage.setItem(stateName, JSON.stringify(state)); } catch {} };
   const viewSets = glimmer.cwrap("glimmer_view_sets", "string", []);
+  // The watch: { spec, summary, error } (each "" when there is none).
+  const watchNow = () => {
+    const [spec = "", summary = "", error = ""] = glimmer.UTF8ToString(glimmer._glimmer_view_watch()).split("\t");
+    return { spec, summary, error };
+  };
+  // `kept[key] = text` ("" drops it), the newest last: at most 50 scripts'
+  // are kept. True when it changed anything.
+  const keepNewest = (kept, key, text) => {
+    if ((kept[key] || "") === text) return false;
+    delete kept[key];
+    if (text) kept[key] = text;
+    for (const old of Object.keys(kept).slice(0, -50)) delete kept[old];
+    return true;
+  };
   let lastKept = 0;
   const keepValues = () => {
-    const key = live.root + ":" + live.path, sets = viewSets();
-    const [spec = "", summary = ""] = glimmer.UTF8ToString(glimmer._glimmer_view_watch()).split("\t");
-    const watching = summary ? spec : "";  // a spec with no summary: stopped, or refused
-    let changed = false;
-    if ((state.watches[key] || "") !== watching) {
-      if (watching) state.watches[key] = watching; else delete state.watches[key];
-      for (const old of Object.keys(state.watches).slice(0, -50)) delete state.watches[old];
-      changed = true;
-    }
-    if (sets && state.values[key] !== sets) {
-      delete state.values[key];
-      state.values[key] = sets;  // the newest last: at most 50 scripts' values are kept
-      for (const old of Object.keys(state.values).slice(0, -50)) delete state.values[old];
-      changed = true;
-    }
-    if (changed) keepState();
+    const key = live.root + ":" + live.path, sets = viewSets(), watch = watchNow();
+    const watching = watch.summary ? watch.spec : "";  // a spec with no summary: stopped, or refused
+    const changed = keepNewest(state.watches, key, watching);
+    if ((sets && keepNewest(state.values, key, sets)) || changed) keepState();
   };
   // The canvas no taller than what the page shows of its column, less the
   // verdict and the start of the first error below it: a long panel (a
@@ -487,10 +489,7 @@ Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(op
     drawn: () => viewDrawn(),
     probe: () => glimmer.UTF8ToString(glimmer._glimmer_view_probe()),
     // The watch: { spec, summary, error } (each "" when there is none).
-    watch: () => {
-      const [spec = "", summary = "", error = ""] = glimmer.UTF8ToString(glimmer._glimmer_view_watch()).split("\t");
-      return { spec, summary, error };
-    },
+    watch: watchNow,
     // One of `glimmer view`'s commands (set, show, values, probe X Y, split,
     // save, frames...) through the same viewer core; what the window would
     // print for it. A save keeps the picture for Save PNG (and snapshot()).

@@ -47,7 +47,7 @@ const blurMeasurement = (glimmer) => {
       cell(row, m.method, m.family + ", sigma " + m.sigma.toFixed(2) + " texels");
       cell(row, String(m.taps));
       cell(row, m.ms.toFixed(2), `fastest run ${m.min.toFixed(2)} ms, slowest ${m.max.toFixed(2)} ms (${m.runs} runs of ` +
-           `25 ms or more, up to ${m.renders_per_run} render${m.renders_per_run > 1 ? "s" : ""} each)`);
+           `${result.min_run_ms} ms or more, up to ${m.renders_per_run} render${m.renders_per_run > 1 ? "s" : ""} each)`);
       row.dataset.rendersPerRun = m.renders_per_run;
       cell(row, fixed(m.model.psnr, 1), `RMSE ${m.model.rmse.toExponential(2)}, largest error ${m.model.max.toExponential(2)}`);
       cell(row, fixed(m.numerical.psnr, 1),
