@@ -16,23 +16,17 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 runs="${1:-5}"
 shift || true
-engines=("${@:-chromium firefox webkit}")
-[ "$#" -eq 0 ] && engines=(chromium firefox webkit)
+engines=("$@")
+[ "${#engines[@]}" -eq 0 ] && engines=(chromium firefox webkit)
 g="${GLIMMER:-build/src/app/glimmer}"
 web="${WEB:-build/web}/src/web"
-source tests/web/engine_lib.sh  # with_x: an X server of its own
+source tests/web/engine_lib.sh  # with_x: an X server of its own; pack_seed_lesson
 work="$(mktemp -d)"
 pictures="$work"  # with_x keeps its display fifo there
 trap 'kill "$server" 2>/dev/null; rm -rf "$work"' EXIT
 
-# The packed lesson, as engine_lib.sh's engine_packed_lesson makes it.
 lesson="$work/lesson"
-mkdir -p "$lesson/scripts" "$lesson/shaders" "$lesson/textures"
-cp scripts/bloom.glib "$lesson/scripts/"
-cp shaders/superblur.vert shaders/superblur.frag shaders/bloom.vert shaders/bloom.frag "$lesson/shaders/"
-cp textures/grid.bmp "$lesson/textures/"
-python3 tools/web_lesson.py pack "$lesson/scripts" "$web" --html "$lesson/lesson.html" --glimmer "$g" >/dev/null ||
-  { echo "first-picture: the lesson could not be packed" >&2; exit 1; }
+pack_seed_lesson "$lesson" "$web" "$g" || { echo "first-picture: the lesson could not be packed" >&2; exit 1; }
 port=$(python3 -c 'import socket; s = socket.socket(); s.bind(("127.0.0.1", 0)); print(s.getsockname()[1])')
 python3 -m http.server "$port" --bind 127.0.0.1 --directory "$web" >/dev/null 2>&1 &
 server=$!

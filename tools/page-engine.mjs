@@ -38,9 +38,9 @@
 //   --layout=WxH: the page in a real window of that outer size, opened,
 //   with a watch on and with an error showing (tools/page-window-layout.mjs).
 //   --first=WxH: the page opened in a real window of that outer size, a
-//   fresh profile: the first picture's marks the page sets on its body, in
-//   ms from the start of loading ({ engine, version, url, ready, verdict,
-//   firstPictureMs, moduleReadyMs, firstOpenMs, firstFramesMs });
+//   fresh profile: the first picture's marks the page sets on its body
+//   ({ engine, version, url, ready, verdict, and every data-...-ms mark:
+//   firstPictureMs, moduleReadyMs, firstOpenMs, firstFramesMs...});
 //   tools/first-picture.sh runs it (issue 39).
 import { spawn } from "node:child_process";
 import { mkdtempSync, rmSync, writeFileSync } from "node:fs";
@@ -274,12 +274,11 @@ try {
   if (mode === "--serve") await serveJourney();
   if (mode && mode.startsWith("--first=")) {
     await browser.go(pageUrl);
+    // Every mark the page sets (data-...-ms), as numbers.
     const seen = await waitUntil(browser.evaluate, `(() => { const d = document.body ? document.body.dataset : {};
         return { ready: d.ready || "", verdict: (document.getElementById("verdict") || {}).textContent || "",
-          firstPictureMs: Number(d.firstPictureMs), moduleReadyMs: Number(d.moduleReadyMs),
-          firstOpenMs: Number(d.firstOpenMs), firstFramesMs: Number(d.firstFramesMs), moduleMs: Number(d.moduleMs),
-          lessonMs: Number(d.lessonMs), keptMs: Number(d.keptMs), firstOpenAtMs: Number(d.firstOpenAtMs),
-          firstFramesAtMs: Number(d.firstFramesAtMs) }; })()`, 30000, (s) => s.ready === "1" && s.firstPictureMs > 0);
+          ...Object.fromEntries(Object.entries(d).filter(([k]) => k.endsWith("Ms")).map(([k, v]) => [k, Number(v)])) };
+      })()`, 30000, (s) => s.ready === "1" && s.firstPictureMs > 0);
     await finishWith({ engine, version: browser.version, url: pageUrl, size: windowSize.join("x"), ...seen });
   }
   if (windowSize) {

@@ -115,16 +115,24 @@ print("    figures: %s | %s | first picture %d ms | redraw at uHalfSize 11 %.0f 
 }
 
 # The seed as a one-file lesson (tools/web_lesson.py pack --html: the page,
-# its module and the lesson's files in one HTML file), opened from disk with
-# no setting changed, as a student double-clicks it: it opens drawing the
-# seed, render's picture.
-engine_packed_lesson() {  # ENGINE
-  local engine="$1" out="$pictures/$1-packed" lesson="$pictures/packed-lesson" seen
-  mkdir -p "$out" "$lesson/scripts" "$lesson/shaders" "$lesson/textures"
+# its module and the lesson's files in one HTML file) at DIR/lesson.html,
+# packed with GLIMMER from the module in WEB_DIR (tools/first-picture.sh
+# uses it too).
+pack_seed_lesson() {  # DIR WEB_DIR GLIMMER
+  local lesson="$1"
+  mkdir -p "$lesson/scripts" "$lesson/shaders" "$lesson/textures"
   cp scripts/bloom.glib "$lesson/scripts/"
   cp shaders/superblur.vert shaders/superblur.frag shaders/bloom.vert shaders/bloom.frag "$lesson/shaders/"
   cp textures/grid.bmp "$lesson/textures/"
-  python3 tools/web_lesson.py pack "$lesson/scripts" "$web/src/web" --html "$lesson/lesson.html" --glimmer "$g" >/dev/null
+  python3 tools/web_lesson.py pack "$lesson/scripts" "$2" --html "$lesson/lesson.html" --glimmer "$3" >/dev/null
+}
+
+# The packed seed opened from disk with no setting changed, as a student
+# double-clicks it: it opens drawing the seed, render's picture.
+engine_packed_lesson() {  # ENGINE
+  local engine="$1" out="$pictures/$1-packed" lesson="$pictures/packed-lesson" seen
+  mkdir -p "$out"
+  pack_seed_lesson "$lesson" "$web/src/web" "$g"
   echo "  the seed as a one-file lesson, opened from disk in $engine"
   seen="$(with_x timeout 60 node tools/page-engine.mjs "$engine" "file://$lesson/lesson.html" "$out" --opening 2>"$out/stderr" | tail -1)"
   python3 -c 'import json, sys; r = json.loads(sys.argv[1]); sys.exit(0 if r["ready"] == "1" and r["verdict"] == "scripts/bloom.glib: drawn" else 1)' \
