@@ -34,8 +34,8 @@ whether the tests catch bugs a rule-based tool writes. Contract:
   changed, nearest its old number), so a test written since can kill it.
   The row written last for a mutant is its verdict. The walk then goes on
   over the new source's candidates, with the same seed, skipping any
-  mutant already decided under another line number (same file, same old
-  and new text).
+  mutant already decided under another line number (its old line found
+  again nearest where it was, the same new text).
 - Shown equivalent: EQUIVALENT below, a mutant's id and one line why no
   input the program can be given tells it from the original. These leave
   the count, as trivially equivalent ones do.
@@ -100,7 +100,8 @@ def skippable(line):
 
 
 def pool(source, mutator):
-    """Every candidate mutant: (id, folder, file, line number, new line, rule)."""
+    """Every candidate mutant: (id, folder, file, line number, new line, rule,
+    the line it replaces)."""
     out = []
     quiet = open(os.devnull, "w")
     for folder in FOLDERS:
@@ -119,7 +120,7 @@ def pool(source, mutator):
                 if skippable(lines[lineno - 1]):
                     continue
                 digest = hashlib.sha1(new.encode()).hexdigest()[:8]
-                out.append((f"{rel}:{lineno}:{digest}", folder, rel, lineno, new, rule[0].strip()))
+                out.append((f"{rel}:{lineno}:{digest}", folder, rel, lineno, new, rule[0].strip(), lines[lineno - 1]))
     out.sort()
     return out
 
@@ -273,7 +274,7 @@ def find_line(path, was, near):
     """The number of the line whose text is `was`, nearest `near`; None when
     no line is."""
     with open(path, encoding="utf-8", newline="") as f:
-        lines = f.read().splitlines(keepends=True)
+        lines = f.readlines()
     hits = [i + 1 for i, line in enumerate(lines) if line == was]
     return min(hits, key=lambda n: abs(n - near)) if hits else None
 
@@ -291,8 +292,8 @@ class Trial:
         build, args = self.build, self.args
         path = os.path.join(self.source, rel)
         with open(path, encoding="utf-8", newline="") as f:
-            original = f.read()
-        lines = original.splitlines(keepends=True)
+            lines = f.readlines()  # numbered as pool() and find_line() number them
+        original = "".join(lines)
         lines[lineno - 1] = new
         with open(os.path.join(self.snap, JOURNAL), "w", encoding="utf-8") as f:
             json.dump({"path": path, "file": original}, f)
@@ -423,17 +424,20 @@ def main(args):
             record(row)
             print(f"[recheck] {r['id']} {row['result']}: {row['detail']} ({row['seconds']} s)", flush=True)
 
-    decided_texts = {(r["file"], r["was"], r["new"]) for r in results.values()}
+    # A mutant decided at an older source, where its line now is: the same
+    # mutant under another number is not drawn again (two equal lines of a
+    # file are two places, and stay two mutants).
+    decided_at = set()
+    for r in results.values():
+        now = find_line(os.path.join(source, r["file"]), r["was"], r.get("line_now", r["line"]))
+        if now is not None:
+            decided_at.add((r["file"], now, r["new"]))
     counted = sum(counts(r) for r in results.values())
     for cand in order:
         if counted >= args.sample or args.sample_recheck_only:
             break
-        mid, folder, rel, lineno, new, rule = cand
-        if mid in results:
-            continue
-        with open(os.path.join(source, rel), encoding="utf-8", newline="") as f:
-            was = f.read().splitlines(keepends=True)[lineno - 1]
-        if (rel, was, new) in decided_texts:
+        mid, folder, rel, lineno, new, rule, was = cand
+        if mid in results or (rel, lineno, new) in decided_at:
             continue
         pause(snap)
         result, detail, seconds = trial.run(folder, rel, lineno, new)
