@@ -12,6 +12,8 @@
 # Usage: tools/first-picture.sh [RUNS] [ENGINES...]
 #   RUNS default 5; ENGINES default chromium firefox webkit.
 #   GLIMMER=build/src/app/glimmer WEB=build/web (where the module is built).
+#   QUERY=no-translations opens both without the kept translations (what
+#   the first picture costs when glslang runs; web_translations.cpp).
 set -uo pipefail
 cd "$(dirname "$0")/.."
 runs="${1:-5}"
@@ -37,6 +39,7 @@ for engine in "${engines[@]}"; do
   for from in http disk; do
     url="http://127.0.0.1:$port/index.html"
     [ "$from" = disk ] && url="file://$lesson/lesson.html"
+    url="$url${QUERY:+?$QUERY}"
     for ((k = 1; k <= runs; k++)); do
       json="$(NODE_PATH=/usr/share/nodejs with_x timeout 90 node tools/page-engine.mjs "$engine" "$url" "$work" \
                 --first=1366x768 2>/dev/null | tail -1)"

@@ -302,7 +302,8 @@ const savePng = (name, dataUrl) => {
 };
 
 // --opening: only how the page opens with nothing asked (PAGE_URL as it
-// is): { engine, version, ready, verdict, cannotStart: { shown, fromDisk,
+// is): { engine, version, ready, verdict, firstTranslations (the page's
+// "HITS MISSES KEPT" at its first picture), cannotStart: { shown, fromDisk,
 // text } }, once it is ready or says it cannot start (20 s at most); the
 // picture it opened with, OUT_DIR/opening.png.
 if (mode === "--opening") {
@@ -310,6 +311,7 @@ if (mode === "--opening") {
   await browser.go(pageUrl);
   const seen = await waitUntil(browser.evaluate, `(() => { const box = document.getElementById("cannot-start");
       return { ready: document.body.dataset.ready || "", verdict: document.getElementById("verdict").textContent,
+        firstTranslations: document.body.dataset.firstTranslations || "",
         cannotStart: box ? { shown: !box.hidden, fromDisk: box.dataset.fromDisk || "", text: box.textContent } : null }; })()`,
     20000, (s) => s.ready === "1" || (s.cannotStart && s.cannotStart.shown));
   if (seen.ready === "1") savePng("opening.png", await evaluate("glimmerPage.snapshot()"));
@@ -363,7 +365,8 @@ try {
     return info ? gl.getParameter(info.UNMASKED_RENDERER_WEBGL) : gl.getParameter(gl.RENDERER);
   })()`);
   result.first = { ...(await state()), firstPictureMs: Number(await evaluate("document.body.dataset.firstPictureMs")),
-                   moduleReadyMs: Number(await evaluate("document.body.dataset.moduleReadyMs")) };
+                   moduleReadyMs: Number(await evaluate("document.body.dataset.moduleReadyMs")),
+                   firstTranslations: await evaluate("document.body.dataset.firstTranslations || ''") };
   delete result.first.file;
   savePng("seed.png", await evaluate("glimmerPage.snapshot()"));
 

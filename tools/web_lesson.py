@@ -249,6 +249,13 @@ def pack(folder, web, html_out=None, static_dir=None, glimmer=None, leave_out_fa
     named = re.findall(r'<script src="([^"]+)"></script>|<link rel="stylesheet" href="([^"]+)">', page)
     parts = {name: read(name) for pair in named for name in pair if name}
     parts["glimmer-web.wasm"] = read("glimmer-web.wasm")
+    # The bundled lesson's translations, made with the module (issue 39,
+    # src/web/web_translations.cpp): the page's first picture of a shader
+    # they hold calls no glslang. Carried whole (about 10 KB compressed): a
+    # teacher's own shaders are simply not among them, and translated.
+    translations = os.path.join(web, "lesson-translations.txt")
+    if os.path.isfile(translations):
+        parts["lesson-translations.txt"] = read("lesson-translations.txt")
     tag = '<script src="glimmer-web.js"></script>'
     if tag not in page or not CSP_META.search(page):
         fail(f"{web}/index.html has no {tag} or no Content-Security-Policy: the page and this packer disagree")
@@ -286,6 +293,9 @@ def pack(folder, web, html_out=None, static_dir=None, glimmer=None, leave_out_fa
                 page = page.replace(tag, '<script type="application/gzip" id="glimmer-lesson">'
                                     + gzip_base64(lesson_json(files, listed, name)) + "</script>\n"
                                     + '<script type="application/gzip" id="glimmer-wasm">' + wasm + "</script>\n"
+                                    + ('<script type="application/gzip" id="glimmer-translations">'
+                                       + gzip_base64(parts["lesson-translations.txt"]) + "</script>\n"
+                                       if "lesson-translations.txt" in parts else "")
                                     + inline(parts["glimmer-web.js"].decode()))
             else:
                 page = page.replace(f'<script src="{script}"></script>', inline(parts[script].decode()))

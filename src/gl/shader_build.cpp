@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "shader/translation_cache.h"
 #include "shader/web_stage.h"
 
 namespace glimmer {
@@ -254,7 +255,7 @@ unsigned buildProgram(const GlApi& gl, const ProgramDecl& decl,
         // desktop shader is translated first (shader/web_translate.h), its
         // errors against the user's lines; GSTAP's aliases go with it.
         if (gl.es && !isGlslEs300(text)) {
-            WebTranslation t = translateForWeb({text, webStage(stage.kind), stage.path, prelude}, diags);
+            WebTranslation t = translateForWebCached({text, webStage(stage.kind), stage.path, prelude}, diags);
             if (!t.ok) {
                 ok = false;
                 continue;

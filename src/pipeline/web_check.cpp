@@ -8,6 +8,7 @@
 #include "gl/shader_build.h"
 #include "plan/inputs.h"
 #include "plan/uniform_values.h"
+#include "shader/translation_cache.h"
 #include "shader/web_stage.h"
 
 namespace glimmer {
@@ -38,7 +39,7 @@ bool checkProgramsForWeb(const LoadedScript& script, Diagnostics& diags) {
             in.stage = webStage(decl.stages[k].kind);
             in.file = decl.stages[k].path;
             in.prelude = decl.gstap ? kGstapPrelude : "";
-            translateForWeb(in, diags);
+            translateForWebCached(in, diags);
         }
     }
     return diags.errorCount() == errorsBefore;

@@ -36,7 +36,8 @@ std::string contentType(const std::string& path) {
         {".html", "text/html; charset=utf-8"}, {".js", "text/javascript; charset=utf-8"},
         {".mjs", "text/javascript; charset=utf-8"}, {".css", "text/css; charset=utf-8"},
         {".wasm", "application/wasm"}, {".json", "application/json"}, {".png", "image/png"},
-        {".svg", "image/svg+xml"}, {".ttf", "font/ttf"}, {".data", "application/octet-stream"}};
+        {".svg", "image/svg+xml"}, {".ttf", "font/ttf"}, {".data", "application/octet-stream"},
+        {".txt", "text/plain; charset=utf-8"}};
     for (const auto& [ext, type] : kTypes)
         if (path.ends_with(ext)) return type;
     return "application/octet-stream";
@@ -129,7 +130,10 @@ struct ClassServer::Impl {
             }
             if (it->is_symlink(ec) || !it->is_regular_file(ec)) continue;
             const std::string rel = fs::relative(it->path(), settings.pageDir, ec).generic_string();
-            static const char* kServed[] = {".html", ".js", ".wasm", ".css", ".data", ".ttf"};
+            // And the bundled lesson's kept translations, which the page asks
+            // for beside it (web/web_translations.cpp: its first picture
+            // without glslang).
+            static const char* kServed[] = {".html", ".js", ".wasm", ".css", ".data", ".ttf", "lesson-translations.txt"};
             if (std::none_of(std::begin(kServed), std::end(kServed), [&](const char* e) { return rel.ends_with(e); }))
                 continue;
             std::string text, why;

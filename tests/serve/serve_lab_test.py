@@ -91,6 +91,11 @@ try:
           and 'content="Lovelace, Ada"' in text, "the page names the student", text[:600])
     check(text.find("glimmer-serve.js") < text.find('<script src="glimmer-page.js">') and
           "wasm-unsafe-eval" in headers.get("content-security-policy", ""), "the page keeps its CSP and script order")
+    status, headers, body = stranger.request("GET", "/lesson-translations.txt")
+    check(status == 200 and body == b"glimmer-web-translations 1 0\n" and headers.get("content-type", "").startswith("text/plain"),
+          "the page's kept translations are served beside it", (status, headers, body[:80]))
+    status, _, _ = stranger.request("GET", "/notes.txt")
+    check(status == 404, "another text file of the page's folder is not served", status)
     status, lesson_json = ada.json("GET", "/lesson.json")
     original = {p: base64.b64decode(d).decode() for p, d in lesson_json["files"].items()}
     check(original.get("blur.frag") == blur and lesson_json["scripts"] == ["blur.glib"], "lesson.json is the lesson")

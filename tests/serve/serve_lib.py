@@ -29,6 +29,12 @@ def make_page(where):
                 '<script src="glimmer-lesson.js"></script>\n<script src="glimmer-page.js"></script>\n</body></html>\n')
     with open(os.path.join(page, "glimmer-web.wasm"), "wb") as f:
         f.write(b"\0asm\1\0\0\0")
+    # The kept translations the page asks for beside it, and a text file the
+    # build might leave there, which is not the page's.
+    with open(os.path.join(page, "lesson-translations.txt"), "w") as f:
+        f.write("glimmer-web-translations 1 0\n")
+    with open(os.path.join(page, "notes.txt"), "w") as f:
+        f.write("not served\n")
     return page
 
 

@@ -68,6 +68,11 @@ engine_checks() {  # ENGINE PAGE_URL
   check_engine "the page must open the seed drawn, with no error and a WebGL 2 context, and say when its first picture came" \
     "'failed' not in r and r['first']['exit'] == 0 and r['first']['errors'] == 0 and r['first']['firstPictureMs'] > 0
      and r['renderer'] != 'no WebGL 2'" "{k: r.get(k) for k in ('failed', 'renderer', 'first')}"
+  # Its shaders from the kept translations (web_translations.cpp): none
+  # translated, so no glslang before the first picture.
+  check_engine "the seed's first picture must take every shader from the kept translations (HITS 0 KEPT)" \
+    "int(r['first']['firstTranslations'].split()[0]) > 0 and r['first']['firstTranslations'].split()[1] == '0'" \
+    "r['first'].get('firstTranslations')"
   "$g" -q render scripts/bloom.glib --size 512x512 -o "$pictures/seed.png"
   "$g" -q render scripts/bloom.glib --size 512x512 --set uAdd=2 -o "$pictures/add2.png"
   echo "    the first picture against glimmer render"
@@ -138,6 +143,9 @@ engine_packed_lesson() {  # ENGINE
   python3 -c 'import json, sys; r = json.loads(sys.argv[1]); sys.exit(0 if r["ready"] == "1" and r["verdict"] == "scripts/bloom.glib: drawn" else 1)' \
     "$seen" 2>/dev/null
   tally $? "$engine: the one-file lesson opened from disk must draw scripts/bloom.glib: $(cut -c1-800 <<<"$seen") $(tail -3 "$out/stderr")"
+  python3 -c 'import json, sys; t = json.loads(sys.argv[1])["firstTranslations"].split(); sys.exit(0 if int(t[0]) > 0 and t[1] == "0" else 1)' \
+    "$seen" 2>/dev/null
+  tally $? "$engine: the one-file lesson's first picture must take every shader from its kept translations: $(cut -c1-300 <<<"$seen")"
   [ -s "$pictures/seed.png" ] || "$g" -q render scripts/bloom.glib --size 512x512 -o "$pictures/seed.png"
   [ -s "$out/opening.png" ] && same_picture "$out/opening.png" "$pictures/seed.png"
   tally $? "$engine: the one-file lesson's first picture is not render's"

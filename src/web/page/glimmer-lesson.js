@@ -170,3 +170,24 @@ const packedWasm = dataBlock("glimmer-wasm");
 const kMaxWasmBytes = 64 * 1024 * 1024;
 const moduleOptions = packedWasm ? blockBytes(packedWasm, kMaxWasmBytes).then((bytes) => ({ wasmBinary: bytes }))
                                  : Promise.resolve({});
+// The bundled lesson's translations to GLSL ES 3.00, made when the module
+// was built (src/web/web_translations.cpp): with them the first picture
+// calls no glslang, whose first call Chromium compiles for 0.4-0.8 s (issue
+// 39). A packed page carries them as a data block; a served page finds them
+// beside it (a packed page without the block has none: nothing beside it
+// is asked for). Only a speed-up: a page without them (?no-translations, a
+// failed read) translates every shader, as it did before.
+const packedTranslations = dataBlock("glimmer-translations");
+const kMaxTranslationsText = 32 * 1024 * 1024;
+const translationsLoaded = query.has("no-translations") ? Promise.resolve(null)
+  : packedTranslations ? blockText(packedTranslations, kMaxTranslationsText).catch(() => null)
+  : packedWasm ? Promise.resolve(null)
+  : new Promise((resolve) => {
+    const request = new XMLHttpRequest();
+    request.open("GET", "lesson-translations.txt");
+    request.overrideMimeType("text/plain; charset=utf-8");
+    request.onprogress = (e) => { if (e.loaded > kMaxTranslationsText) request.abort(); };
+    request.onload = () => resolve(request.status === 200 || (request.status === 0 && request.responseText) ? request.responseText : null);
+    request.onerror = request.onabort = () => resolve(null);
+    try { request.send(); } catch { resolve(null); }
+  });

@@ -15,7 +15,10 @@
 // on #verdict, the text of #diagnostics, and for a render the picture as a
 // PNG data URL in data-png on #picture. ?frames=N times N more frames of
 // it (data-frame-ms on #picture); data-first-picture-ms on the body is the
-// time from the start of loading to the first picture. A refused lesson is
+// time from the start of loading to the first picture; data-translations
+// how many kept translations the page uses (-1: refused) and
+// data-first-translations "HITS MISSES KEPT" at the first picture
+// (web_translations.cpp). A refused lesson is
 // data-exit="2" and data-lesson="refused" on #verdict, the reason its text.
 // ?present opens in the presentation mode (the Present button's). Opened
 // with none of ?check, ?render, ?view, the page keeps what a reload brings
@@ -27,7 +30,7 @@
 // since the page began to load), so the first picture's time can be split.
 const marked = (name, promise) => promise.then((v) => { document.body.dataset[name] = performance.now().toFixed(0); return v; });
 Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(options))), marked("lessonMs", lessonLoaded),
-             marked("keptMs", folderKept)]).then(([glimmer, loaded, kept]) => {
+             marked("keptMs", folderKept), translationsLoaded]).then(([glimmer, loaded, kept, translations]) => {
   // Since the page began to load: the module fetched, compiled and started
   // (PERFORMANCE.md splits the first picture's time at this mark).
   document.body.dataset.moduleReadyMs = performance.now().toFixed(0);
@@ -36,6 +39,13 @@ Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(op
   // ?slice-ms=N: the live view's slice budget (0: whole frames), for tools/page-input-latency.mjs.
   if (query.has("slice-ms")) glimmer._glimmer_view_slice_ms(Number(query.get("slice-ms")) || 0);
   const FS = glimmer.FS;
+  // The bundled lesson's translations (glimmer-lesson.js): data-translations
+  // is how many are in use (-1: refused, the page translates everything).
+  if (translations !== null) {
+    FS.writeFile("/kept-translations.txt", translations);
+    document.body.dataset.translations = glimmer.ccall("glimmer_translations_use", "number", ["string"], ["/kept-translations.txt"]);
+  }
+  const translationStats = () => glimmer.UTF8ToString(glimmer._glimmer_translations_stats());
   const check = glimmer.cwrap("glimmer_check", "number", ["string"]);
   const render = glimmer.cwrap("glimmer_render", "number", ["string", "number", "number", "string"]);
   const output = glimmer.cwrap("glimmer_last_output", "string", []);
@@ -406,7 +416,12 @@ Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(op
     // not before it, where it held the first picture back (issue 39).
     const shown = live;
     keeping = new Promise((resolve) => requestAnimationFrame(() => {
-      if (first && !document.body.dataset.firstPictureMs) document.body.dataset.firstPictureMs = performance.now().toFixed(0);
+      if (first && !document.body.dataset.firstPictureMs) {
+        document.body.dataset.firstPictureMs = performance.now().toFixed(0);
+        // "HITS MISSES KEPT": the first picture's shaders from the kept
+        // translations and translated (tests/web/opening.sh reads it).
+        document.body.dataset.firstTranslations = translationStats();
+      }
       setTimeout(() => {
         if (first) fillEditor();
         if (live === shown && glimmer._glimmer_view_snapshot()) keepPicture();
@@ -499,6 +514,8 @@ Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(op
       return said;
     },
     errors: () => glimmer._glimmer_view_errors(),
+    // "HITS MISSES KEPT" since the page opened (web_translations.cpp).
+    translations: translationStats,
     snapshot: () => { if (glimmer._glimmer_view_snapshot()) keepPicture(); return picture.dataset.png || ""; },
     readFile: (path) => FS.readFile(path, { encoding: "utf8" }),
     writeFile: (path, text) => FS.writeFile(path, text),
