@@ -44,6 +44,22 @@ const measure = () => page.evaluate(`(() => {
     count: document.getElementById("message-count").textContent, errors: glimmerPage.errors(),
     verdict: document.getElementById("verdict").textContent };
 })()`);
+// A measure once the page has settled: `ready` holds of it and two measures
+// 200 ms apart agree (a reload's frames and the panel's refit are done).
+// Fixed sleeps measured a passing state under load (issue 39: the first
+// edit also pays the browser's first compile of the translator, now that
+// the first picture no longer does).
+const settled = async (ready, limitMs = 20000) => {
+  const until = Date.now() + limitMs;
+  let last = null;
+  for (;;) {
+    const now = await measure();
+    if (ready(now) && last !== null && JSON.stringify(now) === JSON.stringify(last)) return now;
+    if (Date.now() > until) return now;
+    last = ready(now) ? now : null;
+    await sleep(200);
+  }
+};
 const shoot = async (name) => {
   const shot = await page.send("Page.captureScreenshot", { format: "png" });
   writeFileSync(join(outDir, name), Buffer.from(shot.result.data, "base64"));
@@ -55,8 +71,7 @@ for (const size of sizes) {
   // Each size from a page as a student first opens it: nothing kept from the last.
   await page.evaluate(`localStorage.clear(); indexedDB.deleteDatabase("glimmer")`);
   await page.navigate();
-  await sleep(600);  // the panel settles its size over a few frames
-  const open = await measure();
+  const open = await settled((m) => m.verdict === "scripts/bloom.glib: drawn");  // the panel settles over a few frames
   await shoot(`${size}-open.png`);
 
   // A broken line typed into bloom.frag after its line 12: an undeclared
@@ -66,8 +81,8 @@ for (const size of sizes) {
   await page.evaluate(`glimmerPage.editor().open("shaders/bloom.frag", 12, 1);
     glimmerPage.editor().cm.setCursor({ line: 11, ch: 10000 }); glimmerPage.editor().cm.focus()`);
   await page.send("Input.insertText", { text: `\n    vec3 broken = rgb * ${name};` });
-  await sleep(1500);  // the editor's pause after typing, the reload, a few frames
-  const broken = await measure();
+  // The editor's pause after typing, the reload, its frames: until the error shows and stays.
+  const broken = await settled((m) => m.errors === 1);
   await shoot(`${size}-broken.png`);
   await page.evaluate(`document.getElementById("revert").click()`);
   await sleep(800);

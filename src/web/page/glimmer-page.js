@@ -254,7 +254,7 @@ Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(op
     FS.chdir(root);
     canvas.width = width || 512;
     canvas.height = height || 512;
-    canvas.style.width = canvas.style.height = "";  // the live view's box, if any, is not a render's
+    canvas.style.width = canvas.style.height = view.style.minWidth = "";  // the live view's box, if any, is not a render's
     const exit = render(path, width, height, sets);
     report(path, exit, "drawn");
     save.disabled = exit !== 0;
@@ -348,10 +348,21 @@ Promise.all([marked("moduleMs", moduleOptions.then((options) => createGlimmer(op
   // CSS pixels: the same size at every devicePixelRatio (the input maps
   // back, web_view_input.cpp).
   let scaled = false;
+  // The canvas's column keeps the widest the canvas has been at this width
+  // in this window: a message that shrinks the picture (fitCanvas's cap,
+  // to keep the first error in the window) moves neither the column's edge
+  // nor the editor beside it, where the student is typing.
+  let columnFor = "", columnWidth = 0;
   const styleCanvas = () => {
     const ratio = window.devicePixelRatio || 1;
-    canvas.style.width = canvas.width / ratio * shrink + "px";
+    const width = canvas.width / ratio * shrink;
+    canvas.style.width = width + "px";
     canvas.style.height = canvas.height / ratio * shrink + "px";
+    const key = [canvas.width, ratio, window.innerWidth, window.innerHeight].join(" ");
+    if (key !== columnFor) { columnFor = key; columnWidth = 0; }
+    columnWidth = Math.max(columnWidth, width);
+    // Its content's width and the scrollbar's gutter beside it (stable: reserved either way).
+    view.style.minWidth = columnWidth + (view.offsetWidth - view.clientWidth) + "px";
   };
   const sizeCanvas = (w, h) => {
     canvas.width = w;
