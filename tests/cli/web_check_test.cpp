@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "cli/run_glimmer.h"
+#include "common/test_folder.h"
 
 namespace glimmer_cli {
 namespace {
@@ -95,6 +96,23 @@ TEST(CliWebCheck, AShaderErrorPointsAtTheShadersLineAndColumn) {
                            ": error: 'stripe': undeclared identifier\n" + text + "\n";
     EXPECT_NE(r.err.find(at), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("glimmer_"), std::string::npos) << "the user never wrote the stand-ins:\n" << r.err;
+}
+
+// What glslang says as a warning stays a warning, at the user's line, with
+// glslang's own words and not its "WARNING:" (issue 40's sampled mutant
+// glslang_log.cpp:115 read every such line as an error): an extension the
+// translator does not know is one warning, and the script checks clean.
+TEST(CliWebCheck, AGlslangWarningIsAWarningAtItsLine) {
+    glimmer::testing::TestFolder dir("web_warning");
+    std::ofstream(dir.path / "s.glib") << "##OpenGL GLIB\nVertex v.vert\nFragment f.frag\nProgram P\nQuadXY 0 1\n";
+    std::ofstream(dir.path / "v.vert") << "void main() { gl_Position = gl_Vertex; }\n";
+    std::ofstream(dir.path / "f.frag") << "#version 120\n#extension GL_NV_made_up : enable\n"
+                                          "void main() { gl_FragColor = vec4(1.); }\n";
+    auto r = runGlimmer({"check", "--web", (dir.path / "s.glib").string()});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.err, (dir.path / "f.frag").string() +
+                         ":2:1: warning: '#extension': extension not supported: GL_NV_made_up\n"
+                         "#extension GL_NV_made_up : enable\n^\n");
 }
 
 TEST(CliWebCheck, TheDesktopCheckOfTheSameScriptsStillCompilesOnAContext) {

@@ -161,5 +161,47 @@ TEST(WatchGpu, CountsAndPictureEqualTheCpuReferenceOnTheSameFloats) {
     }
 }
 
+// Issue 40's sampled mutant watch_gpu.cpp:202 (deleting a third name past
+// the watch's two): stopping a watch deletes its own textures and nothing of
+// the script's. The seed, at sizes whose width is the name of one of its
+// textures on a driver that numbers them from 1 (Mesa), draws after a watch
+// is stopped exactly what it drew before the watch.
+TEST(WatchGpu, StoppingAWatchLeavesTheScriptsTexturesAndItsPicture) {
+    for (const std::string& backend : testing::testBackends()) {
+        for (int size = 1; size <= 8; ++size) {
+            SCOPED_TRACE(backend + " " + std::to_string(size) + "x" + std::to_string(size));
+            PlanOptions options;
+            options.width = options.height = size;
+            Diagnostics diags;
+            LoadedScript loaded;
+            ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded));
+            UniformValues values(loaded.plan);
+            ASSERT_TRUE(values.applySet(loaded.plan, "uAdd=2", diags));
+            BackendChoice choice;
+            ASSERT_TRUE(parseBackend(backend, choice));
+            std::string why;
+            auto context = createContext(choice, why);
+            ASSERT_TRUE(context) << why;
+            auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
+            ASSERT_TRUE(renderer) << why;
+            ASSERT_TRUE(loadAndUpload(*renderer, loaded, false, diags));
+            renderer->render(values, 0.0);
+            const Image before = renderer->readScreen();
+
+            WatchSpec spec;
+            ASSERT_TRUE(parseWatchSpec("bloom.frag:12:rgbblur", spec, why)) << why;
+            Watch watch;
+            ASSERT_TRUE(startWatch(spec, loaded.plan, *renderer, diags, watch));
+            ASSERT_TRUE(drawWatch(*renderer, watch, values, 0).drawn);
+            renderer->dropWatch();
+
+            renderer->render(values, 0.0);
+            const Image after = renderer->readScreen();
+            ASSERT_EQ(after.width, before.width);
+            EXPECT_EQ(after.u8, before.u8);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace glimmer

@@ -56,6 +56,19 @@ TEST(Gs4Translate, VaryingInAndOut) {
     EXPECT_EQ(r.text, "in  vec3 vNormal[];\nout vec3 gNormal;\nflat out int gId;\nout vec2 gST;\n");
 }
 
+// Global declarations after a function are global again once its body
+// closes (issue 40's sampled mutant gs4_translate.cpp:94 kept counting the
+// function's braces as open): a helper above main is how classroom geometry
+// shaders are often written.
+TEST(Gs4Translate, DeclarationsAfterAFunctionAreGlobal) {
+    auto r = translateGs4("vec3 mid(vec3 a, vec3 b) { if (true) { return (a + b) * .5; } return a; }\n"
+                          "varying vec2 gST;\nvarying in vec3 vN[gl_VerticesIn];\n"
+                          "void main() { vec3 c[gl_VerticesIn]; }\n");
+    EXPECT_EQ(r.text, "vec3 mid(vec3 a, vec3 b) { if (true) { return (a + b) * .5; } return a; }\n"
+                      "out vec2 gST;\nin vec3 vN[];\n"
+                      "void main() { vec3 c[gl_in.length()]; }\n");
+}
+
 TEST(Gs4Translate, VaryingBeforeANewlineKeepsTheNewline) {
     auto r = translateGs4("varying\nout vec3 g;\n");
     EXPECT_EQ(r.text, "\nout vec3 g;\n");
