@@ -73,6 +73,31 @@ void expectSameStats(const WatchStats& gpu, const WatchStats& cpu) {
     EXPECT_EQ(watchSummary(gpu), watchSummary(cpu));
 }
 
+// A context of `backend` with a renderer holding `loaded`, or `error`.
+struct Rig {
+    std::unique_ptr<GlContext> context;
+    std::unique_ptr<Renderer> renderer;  // destroyed before its context
+    std::string error;
+};
+
+Rig makeRig(const std::string& backend, LoadedScript& loaded, Diagnostics& diags) {
+    Rig rig;
+    BackendChoice choice;
+    if (!parseBackend(backend, choice)) {
+        rig.error = "unknown backend " + backend;
+        return rig;
+    }
+    rig.context = createContext(choice, rig.error);
+    if (!rig.context) return rig;
+    GlContext* context = rig.context.get();
+    rig.renderer = Renderer::create([context](const char* n) { return context->getProcAddress(n); }, rig.error);
+    if (rig.renderer && !loadAndUpload(*rig.renderer, loaded, false, diags)) {
+        rig.error = "the script did not upload";
+        rig.renderer.reset();
+    }
+    return rig;
+}
+
 TEST(WatchGpu, CountsAndPictureEqualTheCpuReferenceOnTheSameFloats) {
     testing::TestFolder dir("watch_gpu");
     const fs::path data = fs::path(GLIMMER_TEST_DATA) / "cli/watch";
@@ -106,14 +131,10 @@ TEST(WatchGpu, CountsAndPictureEqualTheCpuReferenceOnTheSameFloats) {
             LoadedScript loaded;
             ASSERT_TRUE(loadScript((dir.path / c.script).string(), options, diags, loaded));
             UniformValues values(loaded.plan);
-            BackendChoice choice;
-            ASSERT_TRUE(parseBackend(backend, choice));
+            Rig rig = makeRig(backend, loaded, diags);
+            ASSERT_TRUE(rig.renderer) << rig.error;
+            Renderer* renderer = rig.renderer.get();
             std::string why;
-            auto context = createContext(choice, why);
-            ASSERT_TRUE(context) << why;
-            auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
-            ASSERT_TRUE(renderer) << why;
-            ASSERT_TRUE(loadAndUpload(*renderer, loaded, false, diags));
             WatchSpec spec;
             ASSERT_TRUE(parseWatchSpec(c.watch, spec, why)) << why;
             Watch watch;
@@ -177,14 +198,10 @@ TEST(WatchGpu, StoppingAWatchLeavesTheScriptsTexturesAndItsPicture) {
             ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded));
             UniformValues values(loaded.plan);
             ASSERT_TRUE(values.applySet(loaded.plan, "uAdd=2", diags));
-            BackendChoice choice;
-            ASSERT_TRUE(parseBackend(backend, choice));
+            Rig rig = makeRig(backend, loaded, diags);
+            ASSERT_TRUE(rig.renderer) << rig.error;
+            Renderer* renderer = rig.renderer.get();
             std::string why;
-            auto context = createContext(choice, why);
-            ASSERT_TRUE(context) << why;
-            auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
-            ASSERT_TRUE(renderer) << why;
-            ASSERT_TRUE(loadAndUpload(*renderer, loaded, false, diags));
             renderer->render(values, 0.0);
             const Image before = renderer->readScreen();
 
