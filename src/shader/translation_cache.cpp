@@ -1,5 +1,6 @@
 #include "shader/translation_cache.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <string_view>
@@ -48,16 +49,21 @@ public:
         at_ += s.size();
         return true;
     }
-    // A decimal number in [lo, hi].
+    // A decimal number in [lo, hi]: all its digits read (a long one said
+    // as written, cut at 20), the value held below 10^15 so it never
+    // overflows (every bound here is far below).
     bool number(std::int64_t lo, std::int64_t hi, std::int64_t& v) {
-        size_t start = at_;
+        const size_t start = at_;
         v = 0;
-        while (at_ < text_.size() && text_[at_] >= '0' && text_[at_] <= '9' && at_ - start < 12)
-            v = v * 10 + (text_[at_++] - '0');
+        while (at_ < text_.size() && text_[at_] >= '0' && text_[at_] <= '9')
+            v = std::min<std::int64_t>(v * 10 + (text_[at_++] - '0'), kTooLarge);
         if (at_ == start) return fail("expected a number");
-        if (v < lo || v > hi) return failAt(start, "number " + std::to_string(v) + " out of range");
+        if (v < lo || v > hi)
+            return failAt(start, "number " + text_.substr(start, std::min<size_t>(at_ - start, 20)) +
+                                     (at_ - start > 20 ? "..." : "") + " out of range");
         return true;
     }
+    static constexpr std::int64_t kTooLarge = 1000000000000000;
     bool string(std::string& s) {
         const size_t start = at_;
         std::int64_t n = 0;

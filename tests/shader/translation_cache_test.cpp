@@ -129,6 +129,9 @@ TEST(TranslationCache, AMalformedFileIsRefusedWithAReasonAndTheCacheKept) {
         {"", "byte 0: expected 'glimmer-web-translations 1 '"},
         {"glimmer-web-translations 2 1\n", "byte 0: expected 'glimmer-web-translations 1 '"},
         {"glimmer-web-translations 1 100001\n", "byte 27: number 100001 out of range"},
+        // said as written, however long (and never overflowing)
+        {"glimmer-web-translations 1 100000000000\n", "byte 27: number 100000000000 out of range"},
+        {"glimmer-web-translations 1 " + std::string(40, '9') + "\n", "byte 27: number 99999999999999999999... out of range"},
         {"glimmer-web-translations 1 1\n", "byte 29: expected a number"},
         {"glimmer-web-translations 1 1\n1 1 0 0\n0:\n999:abc", "byte 40: a string runs past the end"},
         {"glimmer-web-translations 1 1\n9 1 0 0\n", "byte 29: number 9 out of range"},

@@ -134,6 +134,11 @@ TEST(WatchRewrite, BracesOnTheLineWatchTheBlockStartOrEnd) {
     EXPECT_EQ(watchedLine(src, 4, "i", 4), "  for (int i = 0; i < 3; i++) { glimmer_watch_store(i);");
     EXPECT_EQ(watchedLine(src, 6, "c", 6), "   glimmer_watch_store(c);}");
     EXPECT_EQ(watchedLine(src, 8, "c", 8), " glimmer_watch_store(c); }");
+    // The line that opens the function: the value as it starts, the lines
+    // after it where they were (issue 40's sampled mutant watch_rewrite.cpp:332
+    // ate the newline after the brace, moving every later line up one).
+    EXPECT_EQ(watchedLine(src, 2, "gl_FragCoord", 2), "{ glimmer_watch_store(gl_FragCoord);");
+    EXPECT_EQ(watchedLine(src, 2, "gl_FragCoord", 3), "  vec3 c = vec3(0.);");
 }
 
 TEST(WatchRewrite, OwnOutputsBecomeGlobalsAndOldShadersUseFragData) {
