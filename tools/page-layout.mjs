@@ -46,9 +46,8 @@ const measure = () => page.evaluate(`(() => {
 })()`);
 // A measure once the page has settled: `ready` holds of it and two measures
 // 200 ms apart agree (a reload's frames and the panel's refit are done).
-// Fixed sleeps measured a passing state under load (issue 39: the first
-// edit also pays the browser's first compile of the translator, now that
-// the first picture no longer does).
+// Fixed sleeps measured a state on the way: 1.5 s after typing an error
+// came before the page's cap had shrunk the picture for it (issue 39).
 const settled = async (ready, limitMs = 20000) => {
   const until = Date.now() + limitMs;
   let last = null;

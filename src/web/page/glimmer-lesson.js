@@ -38,12 +38,12 @@ const lessonUrlChecked = (text) => {
   }
   return url;
 };
-const loadLessonText = (url) => new Promise((resolve, reject) => {
+const loadLessonText = (url, limit = kMaxLessonText) => new Promise((resolve, reject) => {
   const cannot = (why) => reject(refusal("cannot load the lesson " + shownUrl(url.href) + ": " + why));
   const request = new XMLHttpRequest();
   request.open("GET", url.href);
   request.overrideMimeType("text/plain; charset=utf-8");  // text to parse, whatever the server calls it
-  request.onprogress = (e) => { if (e.loaded > kMaxLessonText) { request.abort(); cannot("larger than a lesson may be"); } };
+  request.onprogress = (e) => { if (e.loaded > limit) { request.abort(); cannot("larger than a lesson may be"); } };
   request.onload = () => {
     if (url.protocol === "file:" ? request.status !== 0 && request.status !== 200 : request.status !== 200)
       return cannot("the server answered " + request.status);
@@ -173,8 +173,9 @@ const moduleOptions = packedWasm ? blockBytes(packedWasm, kMaxWasmBytes).then((b
 // The bundled lesson's translations to GLSL ES 3.00, made when the module
 // was built (src/web/web_translations.cpp): with them the first picture
 // calls no glslang, whose first call Chromium compiles for 0.4-0.8 s (issue
-// 39). A packed page carries them as a data block; a served page finds them
-// beside it (a packed page without the block has none: nothing beside it
+// 39). A packed page carries them as a data block; a served page reads them
+// from beside it as it reads a lesson (loadLessonText: its own origin, its
+// own bound; a packed page without the block has none: nothing beside it
 // is asked for). Only a speed-up: a page without them (?no-translations, a
 // failed read) translates every shader, as it did before.
 const packedTranslations = dataBlock("glimmer-translations");
@@ -182,12 +183,4 @@ const kMaxTranslationsText = 32 * 1024 * 1024;
 const translationsLoaded = query.has("no-translations") ? Promise.resolve(null)
   : packedTranslations ? blockText(packedTranslations, kMaxTranslationsText).catch(() => null)
   : packedWasm ? Promise.resolve(null)
-  : new Promise((resolve) => {
-    const request = new XMLHttpRequest();
-    request.open("GET", "lesson-translations.txt");
-    request.overrideMimeType("text/plain; charset=utf-8");
-    request.onprogress = (e) => { if (e.loaded > kMaxTranslationsText) request.abort(); };
-    request.onload = () => resolve(request.status === 200 || (request.status === 0 && request.responseText) ? request.responseText : null);
-    request.onerror = request.onabort = () => resolve(null);
-    try { request.send(); } catch { resolve(null); }
-  });
+  : loadLessonText(new URL("lesson-translations.txt", location.href), kMaxTranslationsText).then((text) => text || null, () => null);
