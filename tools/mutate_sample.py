@@ -23,10 +23,15 @@ whether the tests catch bugs a rule-based tool writes. Contract:
   the test programs of its own folder (STAGE1, whole, no filter; a quick way
   to a kill), then, if they pass, `ctest -LE browser` (every native test,
   stopping at the first failure). "survived" means the whole suite passed.
-- Resumable: each decided mutant is a line of SNAP/sample-results.jsonl; a
-  run skips the ones already there. The source is the snapshot's, fixed for
-  the campaign (its commit is recorded; a different one stops the run
-  unless --sample-reset). Touch SNAP/PAUSE to pause between mutants.
+- Resumable, across checkouts: each decided mutant is a line of RECORD's
+  results.jsonl and the campaign's seed and source commit are RECORD's
+  source.json, both tracked, committed after each session's run (a build
+  folder does not outlive a fresh checkout: the first 69 rows were lost so).
+  A run skips the mutants already there. The source is the snapshot's
+  (SNAP/src), fixed for the campaign; when SNAP/src is gone, it is made again
+  from the recorded commit (git archive) if the tree was clean when it was
+  recorded, or else the run is a recheck (below). Touch SNAP/PAUSE to pause
+  between mutants.
 - Crash-safe: the mutated file's original text is journalled before the
   write and put back by the next run.
 - Rechecks (--sample-recheck): the snapshot moves to the working tree, and
@@ -58,7 +63,10 @@ RULES = ["universal.rules", "cpp.rules", "c_like.rules"]
 # they kill most mutants in seconds.
 STAGE1 = {"plan": ["test_plan"], "shader": ["test_shader"], "gl": ["test_shaderlog", "test_render"],
           "grade": ["test_grade"], "process": ["test_render", "test_glman"], "pipeline": ["test_pipeline"]}
-RESULTS = "sample-results.jsonl"
+# Tracked: the campaign's record outlives the build folder (see Resumable).
+RECORD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mutate-sample")
+RESULTS = os.path.join(RECORD, "results.jsonl")
+META = os.path.join(RECORD, "source.json")
 # Survivors read and shown equivalent (docs/RELIABILITY.md repeats the why).
 EQUIVALENT = {
     "src/plan/draw_units.cpp:20:716581da": "size_t(-1) is never below a vector's size, so t = -1 still fails the next test",
@@ -183,10 +191,32 @@ def quick_compile(path, build, commands, log):
     return run(["sh", "-c", re.sub(r" -o \S+", " -o /dev/null", command) + " -fsyntax-only"], directory, log, 600) == 0
 
 
+REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
 def git_head():
-    r = subprocess.run(["git", "-C", os.path.dirname(os.path.dirname(os.path.abspath(__file__))),
-                        "rev-parse", "HEAD"], capture_output=True, text=True)
+    r = subprocess.run(["git", "-C", REPO, "rev-parse", "HEAD"], capture_output=True, text=True)
     return r.stdout.strip()
+
+
+def tree_clean():
+    """True when the working tree is its HEAD commit (the record aside), so
+    the snapshot can be made again from the commit alone."""
+    r = subprocess.run(["git", "-C", REPO, "status", "--porcelain"], capture_output=True, text=True)
+    rel = os.path.relpath(RECORD, REPO)
+    return r.returncode == 0 and all(l[3:].startswith(rel) for l in r.stdout.splitlines())
+
+
+def source_from_commit(snap, commit):
+    """SNAP/src made again from a recorded commit; None when git cannot."""
+    src = os.path.join(snap, "src")
+    shutil.rmtree(src, ignore_errors=True)
+    os.makedirs(src)
+    archive = subprocess.run(["git", "-C", REPO, "archive", commit], capture_output=True)
+    if archive.returncode != 0 or subprocess.run(["tar", "-x", "-C", src], input=archive.stdout).returncode != 0:
+        return None
+    print(f"mutate: {src} made again from {commit[:10]}, the campaign's recorded source", flush=True)
+    return src
 
 
 def configure(snap, source):
@@ -211,8 +241,8 @@ def recover(snap):
         print(f"mutate: put back {entry['path']}, left mutated by an earlier run", flush=True)
 
 
-def decided(snap):
-    path = os.path.join(snap, RESULTS)
+def decided():
+    path = RESULTS
     out = {}
     if os.path.exists(path):
         with open(path, encoding="utf-8") as f:
@@ -345,34 +375,43 @@ class Trial:
 def main(args):
     snap = os.path.abspath(args.snapshot or os.path.join("build-mut", "sample"))
     from mutate import sync_snapshot  # the copy of the working tree, as the table's mode makes it
-    results = decided(snap)
+    results = decided()
     if args.sample_report_only:
         report(results, args.seed, args.sample, args.report)
         return 0
     head = git_head()
-    meta_path = os.path.join(snap, "sample-source.json")
+    os.makedirs(snap, exist_ok=True)
+    os.makedirs(RECORD, exist_ok=True)
     recover(snap)
-    if os.path.exists(meta_path) and results and not args.sample_reset:
-        with open(meta_path) as f:
+
+    def save(meta):
+        with open(META, "w") as f:
+            json.dump(meta, f, indent=1)
+            f.write("\n")
+
+    if os.path.exists(META) and results and not args.sample_reset:
+        with open(META) as f:
             meta = json.load(f)
         if meta.get("seed") != args.seed:
             sys.exit(f"mutate: this campaign's seed is {meta.get('seed')}; --sample-reset to start over")
+        source = os.path.join(snap, "src")  # the campaign's copy, as the last run or recheck left it
+        if not args.sample_recheck and not os.path.exists(os.path.join(source, "CMakeLists.txt")):
+            source = source_from_commit(snap, meta["commit"]) if meta.get("clean") else None
+            if source is None:
+                print("mutate: the campaign's source is gone and cannot be made again from its commit: "
+                      "rechecking against the working tree", flush=True)
+                args.sample_recheck = True
         if args.sample_recheck:
             source = sync_snapshot(snap)  # the campaign moves to the working tree
             meta.setdefault("rechecked", []).append({"commit": head, "at": time.strftime("%Y-%m-%d %H:%M")})
-            meta["commit"] = head
-            with open(meta_path, "w") as f:
-                json.dump(meta, f)
-        else:
-            source = os.path.join(snap, "src")  # the campaign's copy, as the last run or recheck left it
+            meta["commit"], meta["clean"] = head, tree_clean()
+            save(meta)
     else:
-        if args.sample_reset and os.path.exists(os.path.join(snap, RESULTS)):
-            os.remove(os.path.join(snap, RESULTS))
+        if args.sample_reset and os.path.exists(RESULTS):
+            os.remove(RESULTS)
             results = {}
         source = sync_snapshot(snap)
-        os.makedirs(snap, exist_ok=True)
-        with open(meta_path, "w") as f:
-            json.dump({"seed": args.seed, "commit": head, "started": time.strftime("%Y-%m-%d %H:%M")}, f)
+        save({"seed": args.seed, "commit": head, "clean": tree_clean(), "started": time.strftime("%Y-%m-%d %H:%M")})
     build = configure(snap, source)
     logs = os.path.join(snap, "logs")
     os.makedirs(logs, exist_ok=True)
@@ -404,7 +443,7 @@ def main(args):
 
     commands = compile_commands(build)
     trial = Trial(snap, source, build, logs, base, baseline_dir, commands, args)
-    out = open(os.path.join(snap, RESULTS), "a", encoding="utf-8")
+    out = open(RESULTS, "a", encoding="utf-8")
 
     def record(row):
         out.write(json.dumps(row) + "\n")
