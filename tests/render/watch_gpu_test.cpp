@@ -220,5 +220,61 @@ TEST(WatchGpu, StoppingAWatchLeavesTheScriptsTexturesAndItsPicture) {
     }
 }
 
+// Issue 40's sampled mutant watch_gpu.cpp:293 (the reduction's last merge
+// unbinding three of the four units it bound): a watch leaves every unit as
+// it found it, so a still scene watched frame after frame is the same watch.
+// The script's program reads unit 3, which the script never gives a
+// texture, as an unsigned sampler; at 260x300 the reduction takes two
+// levels, and its merge binds its own unsigned counts to unit 3. Left there,
+// the second frame's watched value would read them.
+TEST(WatchGpu, AStillSceneWatchedTwiceIsTheSameWatch) {
+    testing::TestFolder dir("watch_gpu_units");
+    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "cli/watch/quad.vert", dir.path / "quad.vert",
+                  fs::copy_options::overwrite_existing);
+    std::ofstream(dir.path / "stray.frag") << R"(#version 330 compatibility
+uniform usampler2D uStray;
+in vec2 vST;
+void main( )
+{
+    uvec4 u = texture( uStray, vST );
+    gl_FragColor = vec4( vec3( u.rgb ), 1. );
+}
+)";
+    std::ofstream(dir.path / "stray.glib") << R"(##OpenGL GLIB
+Ortho -1 1 -1 1
+LookAt 0 0 1  0 0 0  0 1 0
+Vertex quad.vert
+Fragment stray.frag
+Program Stray
+    uStray 3
+QuadXY 0 2
+)";
+    for (const std::string& backend : testing::testBackends()) {
+        SCOPED_TRACE(backend);
+        PlanOptions options;
+        options.width = 260, options.height = 300;
+        Diagnostics diags;
+        LoadedScript loaded;
+        ASSERT_TRUE(loadScript((dir.path / "stray.glib").string(), options, diags, loaded));
+        UniformValues values(loaded.plan);
+        Rig rig = makeRig(backend, loaded, diags);
+        ASSERT_TRUE(rig.renderer) << rig.error;
+        std::string why;
+        WatchSpec spec;
+        ASSERT_TRUE(parseWatchSpec("stray.frag:6:u", spec, why)) << why;
+        Watch watch;
+        ASSERT_TRUE(startWatch(spec, loaded.plan, *rig.renderer, diags, watch));
+        const WatchFrame first = drawWatch(*rig.renderer, watch, values, 0);
+        ASSERT_TRUE(first.drawn);
+        const Image firstPicture = rig.renderer->readWatchPicture();
+        // Nothing on the unit: every pixel reads the same.
+        EXPECT_EQ(first.stats.lo, first.stats.hi);
+        const WatchFrame second = drawWatch(*rig.renderer, watch, values, 0);
+        ASSERT_TRUE(second.drawn);
+        EXPECT_EQ(watchSummary(second.stats), watchSummary(first.stats));
+        EXPECT_EQ(rig.renderer->readWatchPicture().u8, firstPicture.u8);
+    }
+}
+
 }  // namespace
 }  // namespace glimmer
