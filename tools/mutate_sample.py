@@ -81,6 +81,9 @@ EQUIVALENT = {
                                                  "info target, which saturates at 1, the bytes of 4 (every reader clamps to 4 too)",
     "src/shader/compat_rewrite.cpp:56:ee2d5297": "definesOf only ever reads kGstapPrelude or \"\", every line of which is "
                                          "'#define NAME VALUE', which the guard lets through",
+    "src/process/batch.cpp:315:15fa4577": "a time-out's `ms <= limit` made `<`: they differ only when the elapsed time, "
+                                           "a steady clock's nanoseconds read at a poll, equals the limit exactly, "
+                                           "which no script or setting can choose",
     "src/plan/plan_shapes.cpp:44:27e3c854": "of the shapes made from numbers (geometry/shape_registry.cpp), only WireTorus "
                                             "sorts at or after \"WireTorus\" (WireBox ... WireTeapot all before it)",
 }

@@ -1,4 +1,5 @@
 // `glimmer render` and `glimmer check` on the seed bloom script, and --set.
+#include <cstdlib>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -128,6 +129,33 @@ TEST(CliRender, DumpOfAUnitWithNoTextureIsAUsageError) {
     EXPECT_EQ(countOf(r.err, "glimmer: error: --dump 4: no texture on unit 4\n"), 1) << r.err;
     EXPECT_FALSE(fs::exists(dir.file("four.png")));
     EXPECT_FALSE(fs::exists(dir.file("x.png")));  // nothing is drawn or written
+}
+
+// Where no renderer can be made, the user is told in one line of its own,
+// after the script's warnings, with exit 1 and no picture: here a driver
+// that makes a context and offers no GL function at all (a stand-in
+// libOSMesa, tests/stand_in_drivers/no_gl_osmesa.c). Issue 40's sampled
+// mutant process/session.cpp:68 dropped that line's end, so the shell's
+// prompt ran on after it.
+TEST(CliRender, ADriverWithoutTheFunctionsNeededIsSaidOnALineOfItsOwn) {
+    TempDir dir;
+    const char* old = std::getenv("LD_LIBRARY_PATH");
+    const std::string kept = old ? old : "";
+    ::setenv("LD_LIBRARY_PATH", (std::string(NO_GL_OSMESA_DIR) + (old ? ":" + kept : "")).c_str(), 1);
+    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "16x16", "--backend",
+                         "osmesa"});
+    if (old) ::setenv("LD_LIBRARY_PATH", kept.c_str(), 1);
+    else ::unsetenv("LD_LIBRARY_PATH");
+    ASSERT_FALSE(r.timedOut);
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    const std::string said = "glimmer: error: the OpenGL driver lacks glGetError, glGetString, ";
+    const size_t at = r.err.find(said);
+    ASSERT_NE(at, std::string::npos) << r.err;
+    EXPECT_TRUE(at == 0 || r.err[at - 1] == '\n') << r.err;
+    EXPECT_EQ(r.err.find('\n', at), r.err.size() - 1) << "not one line, ended:\n" << r.err;
+    EXPECT_EQ(countOf(r.err, kDegenerateOrtho), 1) << r.err;
+    EXPECT_EQ(r.out, "");
+    EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }
 
 TEST(CliCheck, BloomChecksCleanAndWritesNothing) {
