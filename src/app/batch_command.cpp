@@ -69,14 +69,14 @@ void addBatchCommand(CLI::App& app, BatchOptions& o) {
                                       "into what -o already holds");
     sub->add_option("--overrides", o.overrides, "grading: a CSV student,score,comment whose scores and comments the "
                                                 "report, the CSV and the feedback pages take over the computed ones");
-    sub->add_option("--pass-ssim", o.passSsim, "grading: SSIM a pass needs at every setting")
+    sub->add_option("--pass-ssim", o.thresholds.passSsim, "grading: SSIM a pass needs at every setting")
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
-    sub->add_option("--pass-psnr", o.passPsnr, "grading: PSNR (dB) a pass needs at every setting")
+    sub->add_option("--pass-psnr", o.thresholds.passPsnr, "grading: PSNR (dB) a pass needs at every setting")
         ->capture_default_str()->check(CLI::Range(0.0, 200.0));
-    sub->add_option("--look-ssim", o.lookSsim, "grading: SSIM at the worst setting below which a submission is "
+    sub->add_option("--look-ssim", o.thresholds.lookSsim, "grading: SSIM at the worst setting below which a submission is "
                                                "wrong rather than worth a look")
         ->capture_default_str()->check(CLI::Range(0.0, 1.0));
-    sub->add_option("--look-psnr", o.lookPsnr, "grading: PSNR (dB) at every setting below which a submission is "
+    sub->add_option("--look-psnr", o.thresholds.lookPsnr, "grading: PSNR (dB) at every setting below which a submission is "
                                                "wrong rather than worth a look")
         ->capture_default_str()->check(CLI::Range(0.0, 200.0));
 }

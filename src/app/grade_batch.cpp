@@ -333,8 +333,7 @@ int runGradeBatch(const BatchOptions& o, const std::vector<std::string>& inputs,
     } else {
         settings = settingsFromSliders(slidersOf(solution.plan));
     }
-    Thresholds thresholds{o.passSsim, o.passPsnr, o.lookSsim};
-    thresholds.lookPsnr = o.lookPsnr;
+    const Thresholds& thresholds = o.thresholds;
     const fs::path out(o.outputDir), pictures = out / "pictures", unpacked = out / "unpacked";
     std::error_code ec;
     fs::create_directories(pictures, ec);

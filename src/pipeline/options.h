@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "grade/grading.h"  // Thresholds: grading's defaults, said once
+
 namespace glimmer {
 
 // The process's exit code: 0 success, 1 script or shader errors, 2 usage errors.
@@ -66,7 +68,7 @@ struct BatchOptions : CommonOptions {
     bool resume = false;            // --resume: keep what -o already holds, grade only the rest
     std::vector<std::string> only;  // --only NAME: regrade these students into what -o already holds
     std::string overrides;          // --overrides FILE: the teacher's scores and comments (grade/overrides.h)
-    double passSsim = 0.95, passPsnr = 30, lookSsim = 0.70, lookPsnr = 18;
+    Thresholds thresholds;          // --pass-ssim, --pass-psnr, --look-ssim, --look-psnr
 };
 
 // glimmer batch-merge: the shards of a grading job array joined into one report.

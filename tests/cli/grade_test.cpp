@@ -190,7 +190,8 @@ TEST(CliGrade, EachKindOfSubmissionGetsItsVerdict) {
     std::string page = readAll(out / "report.html");
     EXPECT_EQ(page.find("src=\"pictures/"), std::string::npos);
     EXPECT_GE(countOf(page, "src=\"data:image/png;base64,"), 7 * 3);
-    EXPECT_NE(page.find("pass: SSIM ≥ 0.95 and PSNR ≥ 30 dB at every setting"), std::string::npos);
+    EXPECT_NE(page.find("pass: SSIM ≥ 0.95 and PSNR ≥ 30 dB at every setting; look: SSIM ≥ 0.7 at the worst and "
+                        "PSNR ≥ 18 dB at every setting; score: 100 × the worst SSIM"), std::string::npos);
     EXPECT_NE(page.find("compared at 5 settings: defaults · uFreq=2 · uFreq=12 · uTint=0 · uTint=1"), std::string::npos);
     EXPECT_LT(page.find("<b>broken</b>"), page.find("<b>painted</b>"));
     EXPECT_LT(page.find("<b>painted</b>"), page.find("<b>shifted</b>"));
