@@ -175,6 +175,31 @@ TEST(Hdr, MipChainIsMadeAfterEachPass) {
         }
 }
 
+// A sampler on a unit the script never gave a texture reads nothing, also
+// after a pass whose target has a mip chain: the chain is remade with that
+// target bound for a moment, and it must not stay there (issue 40's sampled
+// mutant renderer.cpp:195 unbound it from no target at all, and the next
+// pass's sampler on unit 0 read the white target instead of black).
+TEST(Hdr, AUnitTheScriptGaveNoTextureReadsNothingAfterAMipChainIsMade) {
+    Scene sc("mipsunbound");
+    std::ofstream(sc.dir / "white.frag") << "#version 330 compatibility\nvoid main() { gl_FragColor = vec4(1.); }\n";
+    std::string s = sc.script("Texture2D 6 8 8 RGBA32F mips\nTexture2D 7 8 8 RGBA32F\n"
+                              "RenderToTexture 6\nVertex superblur.vert\nFragment white.frag\nProgram White\nQuadXY 0 1\n"
+                              "RenderToTexture 7\nFragment copy.frag\nProgram Stray Src 0\nQuadXY 0 1\n");
+    for (const std::string& backend : testBackends()) {
+        SCOPED_TRACE(backend);
+        Rendered r = renderScript(backend, s, {}, {6, 7});
+        ASSERT_TRUE(r.ok) << r.error;
+        ASSERT_EQ(r.floats[6].width, 8);
+        ASSERT_EQ(r.floats[7].width, 8);
+        long white = 0, black = 0;
+        for (size_t i = 0; i < r.floats[6].f32.size(); ++i) white += i % 4 != 3 && r.floats[6].f32[i] == 1.f;
+        for (size_t i = 0; i < r.floats[7].f32.size(); ++i) black += i % 4 != 3 && r.floats[7].f32[i] == 0.f;
+        EXPECT_EQ(white, 8 * 8 * 3);  // the first pass drew
+        EXPECT_EQ(black, 8 * 8 * 3);  // and the second read nothing of it
+    }
+}
+
 TEST(Hdr, UnknownFormatIsAnError) {
     Scene sc("badformat");
     std::string s = sc.script("Texture2D 6 8 8 RGB10\n");
