@@ -87,6 +87,10 @@ EQUIVALENT = {
     "src/grade/safe_unzip.cpp:108:75c5bc73": "the unpacking buffer 64 x 1023 bytes instead of 64 x 1024: the loop reads "
                                              "min(buffer, declared + 1 - got) until the entry ends, so any size above "
                                              "0 writes the same bytes and finds the same extra byte",
+    "src/gl/watch_gpu.cpp:259:0ac978a1": "the watch's targets kept, not deleted, when its framebuffer is incomplete "
+                                         "(float targets not renderable): every later frame finds the same size, "
+                                         "skips making them, fails the same check and draws and says the same; "
+                                         "they go when the watch stops or the size changes",
     "src/plan/plan_shapes.cpp:44:27e3c854": "of the shapes made from numbers (geometry/shape_registry.cpp), only WireTorus "
                                             "sorts at or after \"WireTorus\" (WireBox ... WireTeapot all before it)",
 }

@@ -80,6 +80,29 @@ TEST(Grading, ThumbnailsAverageBoxes) {
     EXPECT_EQ(t.u8[0], 150);
 }
 
+// The report's thumbnails (grading.h: thumbnail) show the picture: each
+// pixel the average of its own box, row by row. Four quadrants of four
+// colours, 200x96 into 50x24, boxes of 4x4 that never straddle two (issue
+// 40's sampled mutant grading.cpp:152 read row y at y + width, and the
+// bottom half of every thumbnail showed the top's colours).
+TEST(Grading, AThumbnailShowsEachQuadrantOfItsPictureWhereItIs) {
+    const std::uint8_t colours[4][4] = {{250, 0, 0, 255}, {0, 250, 0, 255}, {0, 0, 250, 255}, {120, 60, 30, 255}};
+    auto quadrant = [](int x, int y, int w, int h) { return (x < w / 2 ? 0 : 1) + (y < h / 2 ? 0 : 2); };
+    Image p = Image::rgba8(200, 96);
+    for (int y = 0; y < 96; ++y)
+        for (int x = 0; x < 200; ++x)
+            for (int c = 0; c < 4; ++c) p.u8[(size_t(y) * 200 + size_t(x)) * 4 + size_t(c)] = colours[quadrant(x, y, 200, 96)][c];
+    Image t = thumbnail(p, 50);
+    ASSERT_EQ(t.width, 50);
+    ASSERT_EQ(t.height, 24);
+    long wrong = 0;
+    for (int y = 0; y < 24; ++y)
+        for (int x = 0; x < 50; ++x)
+            for (int c = 0; c < 4; ++c)
+                wrong += t.u8[(size_t(y) * 50 + size_t(x)) * 4 + size_t(c)] != colours[quadrant(x, y, 50, 24)][c];
+    EXPECT_EQ(wrong, 0);
+}
+
 TEST(Grading, VerdictsFollowTheThresholds) {
     Thresholds t;
     size_t worst = 9;
