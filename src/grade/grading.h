@@ -1,6 +1,10 @@
 // Grading one submission's pictures against the solution's: which slider
 // settings to try, how alike two pictures are, and the verdict. Pure
 // functions on pictures already rendered; no GL.
+// Issue 40's sampled mutants found two things no test held (src/grade at 2
+// of 4 then): the thumbnails the report shows, now compared byte for byte
+// against their picture's quadrants, and Thresholds' defaults, which the
+// program read from a second copy in BatchOptions (now it holds these).
 #pragma once
 #include <string>
 #include <vector>

@@ -1,6 +1,10 @@
 // A script loaded, planned and prepared on a GL context of its own: what
 // `render`, `check` and `sheet` start from. The steps themselves are
 // pipeline/prepare_script.h; this adds options, a context and printing.
+// Every way it can fail is a message a user reads, one line each, and an
+// exit code; the tests hold it to that where no context or no renderer can
+// be made (issue 40's sampled mutants found the second untested: the CLI
+// tests' stand-in driver, tests/stand_in_drivers/, is how it is reached).
 #pragma once
 #include <memory>
 #include <optional>
