@@ -64,8 +64,10 @@ RULES = ["universal.rules", "cpp.rules", "c_like.rules"]
 # they kill most mutants in seconds.
 STAGE1 = {"plan": ["test_plan"], "shader": ["test_shader"], "gl": ["test_shaderlog", "test_render"],
           "grade": ["test_grade"], "process": ["test_render", "test_glman"], "pipeline": ["test_pipeline"]}
+from mutate import REPO  # noqa: E402  (the repository both modes work in)
+
 # Tracked: the campaign's record outlives the build folder (see Resumable).
-RECORD = os.path.join(os.path.dirname(os.path.abspath(__file__)), "mutate-sample")
+RECORD = os.path.join(REPO, "tools", "mutate-sample")
 RESULTS = os.path.join(RECORD, "results.jsonl")
 META = os.path.join(RECORD, "source.json")
 # Survivors read and shown equivalent (docs/RELIABILITY.md repeats the why).
@@ -226,9 +228,6 @@ def quick_compile(path, build, commands, log):
     return run(["sh", "-c", re.sub(r" -o \S+", " -o /dev/null", command) + " -fsyntax-only"], directory, log, 600) == 0
 
 
-REPO = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
 def git_head():
     r = subprocess.run(["git", "-C", REPO, "rev-parse", "HEAD"], capture_output=True, text=True)
     return r.stdout.strip()
@@ -277,10 +276,9 @@ def recover(snap):
 
 
 def decided():
-    path = RESULTS
     out = {}
-    if os.path.exists(path):
-        with open(path, encoding="utf-8") as f:
+    if os.path.exists(RESULTS):
+        with open(RESULTS, encoding="utf-8") as f:
             for line in f:
                 if line.strip():
                     r = json.loads(line)

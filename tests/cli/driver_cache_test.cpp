@@ -4,7 +4,6 @@
 // (with its warnings) is then empty; Glimmer turns that cache off.
 #include <cstdlib>
 #include <fstream>
-#include <optional>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -14,27 +13,6 @@
 using namespace glimmer_cli;
 
 namespace {
-
-// Sets (or unsets) one environment variable for the life of the object; the
-// children runGlimmer starts inherit it.
-class EnvVar {
-public:
-    EnvVar(const char* name, const char* value) : name_(name) {
-        if (const char* old = std::getenv(name)) old_ = old;
-        if (value) ::setenv(name, value, 1);
-        else ::unsetenv(name);
-    }
-    ~EnvVar() {
-        if (old_) ::setenv(name_, old_->c_str(), 1);
-        else ::unsetenv(name_);
-    }
-    EnvVar(const EnvVar&) = delete;
-    EnvVar& operator=(const EnvVar&) = delete;
-
-private:
-    const char* name_;
-    std::optional<std::string> old_;
-};
 
 // A fragment shader with a true driver warning: a local read before it is
 // written (Mesa: "`shade' used uninitialized").

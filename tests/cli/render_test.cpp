@@ -140,12 +140,12 @@ TEST(CliRender, DumpOfAUnitWithNoTextureIsAUsageError) {
 TEST(CliRender, ADriverWithoutTheFunctionsNeededIsSaidOnALineOfItsOwn) {
     TempDir dir;
     const char* old = std::getenv("LD_LIBRARY_PATH");
-    const std::string kept = old ? old : "";
-    ::setenv("LD_LIBRARY_PATH", (std::string(NO_GL_OSMESA_DIR) + (old ? ":" + kept : "")).c_str(), 1);
-    auto r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "16x16", "--backend",
-                         "osmesa"});
-    if (old) ::setenv("LD_LIBRARY_PATH", kept.c_str(), 1);
-    else ::unsetenv("LD_LIBRARY_PATH");
+    RunResult r;
+    {
+        EnvVar path("LD_LIBRARY_PATH", (std::string(NO_GL_OSMESA_DIR) + (old ? ":" + std::string(old) : "")).c_str());
+        r = runGlimmer({"render", "scripts/bloom.glib", "-o", dir.file("x.png"), "--size", "16x16", "--backend",
+                        "osmesa"});
+    }
     ASSERT_FALSE(r.timedOut);
     EXPECT_EQ(r.exitCode, 1) << r.err;
     const std::string said = "glimmer: error: the OpenGL driver lacks glGetError, glGetString, ";

@@ -4,6 +4,7 @@
 #include <sys/types.h>
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -86,5 +87,19 @@ std::string cliData(const std::string& name);
 // feeds the next). The runaway pass is the second, the screen pass at line 9
 // (RenderToTexture); the first, into unit 6, is quick. For --timeout tests.
 std::string writeRunawayScript(const TempDir& dir);
+
+// Sets (or unsets) one environment variable for the life of the object; the
+// children runGlimmer starts inherit it.
+class EnvVar {
+public:
+    EnvVar(const char* name, const char* value);
+    ~EnvVar();
+    EnvVar(const EnvVar&) = delete;
+    EnvVar& operator=(const EnvVar&) = delete;
+
+private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
 
 }  // namespace glimmer_cli
