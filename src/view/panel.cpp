@@ -252,6 +252,7 @@ bool targetCombo(ViewerState& s, const char* label, const Plan& plan, const std:
 void rememberControl(ViewerState& s, const std::string& name, float frameWidth) {
     const ImVec2 at = ImGui::GetItemRectMin(), size = ImGui::GetItemRectSize();
     s.controlRects[name] = {at.x, at.y, frameWidth > 0 ? std::min(size.x, frameWidth) : size.x, size.y};
+    if (ImGui::IsItemActive()) s.activeControl = name;
 }
 
 void setUpFonts(float scale) {
@@ -307,7 +308,7 @@ std::string panelState(const ViewerState& s, const std::optional<WatchRange>& ra
                             onOff(s.compare), word(targetName(plan, s.compareLeft)), word(targetName(plan, s.compareRight)),
                             s.divider);
     }
-    line += fmt::format(" probe={} watch={} range={} errors={} status={}", onOff(s.probe), word(s.watch ? s.watchSpec : ""),
+    line += fmt::format(" active={} probe={} watch={} range={} errors={} status={}", word(s.activeControl), onOff(s.probe), word(s.watch ? s.watchSpec : ""),
                         range ? fmt::format("{:g},{:g}", range->lo, range->hi) : "auto", s.errors.size(), word(s.status));
     if (s.good && s.values) {
         for (const auto& c : mergedUniforms(s.good->plan, s.splitUniforms)) {
@@ -335,6 +336,7 @@ std::string overlayText(const ViewerState& s) {
 std::vector<ViewCommand> drawPanel(ViewerState& s, const std::vector<std::pair<int, unsigned>>& thumbnails) {
     std::vector<ViewCommand> asked;
     s.controlRects.clear();
+    s.activeControl.clear();
     float em = ImGui::GetFontSize();
     ImGui::PushItemWidth(em * 11);  // a fixed width: the panel's width follows its content
     // Text wraps at 30 em, or inside the width the shell pins the panel to

@@ -75,6 +75,11 @@ struct ViewerState {
     // Where each uniform's control was drawn in the last frame (x, y, w, h
     // in window pixels): what a test or a script clicks (web_view.cpp).
     std::map<std::string, std::array<float, 4>> controlRects;
+    // The named control ImGui held active in the last frame ("" none): a
+    // field that has the keyboard, a button held down, a slider dragged.
+    // `panel` says it (active=), so a test that clicks a field knows the
+    // click took before it types (a slow frame can lose a click).
+    std::string activeControl;
     float panelMaxW = 0;  // > 0: the shell pins the panel's width (the page): text wraps inside it
 
     // glman's mouse: drag to turn the scene, scroll to zoom; kept out of the
