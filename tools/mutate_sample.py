@@ -21,9 +21,13 @@ whether the tests catch bugs a rule-based tool writes. Contract:
   equivalence; the build has no debug info, so only code counts).
 - A mutant is "killed" when any test of the whole native suite fails: first
   the test programs of its own folder (STAGE1, whole, no filter; a quick way
-  to a kill), then, if they pass, `ctest -LE browser` (every native test,
-  stopping at the first failure; a failing test is run again alone and
-  counts only if it fails again). "survived" means the whole suite passed.
+  to a kill), then, if they pass, every other test program whole, two at a
+  time, and CTest's script tests (serve.*, grading.*): the whole native
+  suite, `ctest -LE browser`'s tests, stopping at the first failure; a
+  failing case is run again alone and counts only if it fails again.
+  Whole programs rather than CTest's process a case: the same tests in
+  about half the time (docs/RELIABILITY.md). "survived" means the whole
+  suite passed.
 - Resumable, across checkouts: each decided mutant is a line of RECORD's
   results.jsonl and the campaign's seed and source commit are RECORD's
   source.json, both tracked, committed after each session's run (a build
@@ -178,27 +182,84 @@ def failed_ctest(log):
     return ", ".join(names[:5]) or tail(log, 3)
 
 
-def native_suite(build, jobs, log):
-    """"" when every native test passes, else the failing tests' names. A
-    test that fails is run again alone: a kill must repeat. The viewer's
-    tests click a real window, and on a machine loaded by other work one
-    failed once unmutated and passed alone; a failure that does not repeat
-    is noted and the suite run again, whole."""
-    flaky = []
-    for attempt in range(2):
-        rc = run(["ctest", "--test-dir", build, "-LE", "browser", "-j", str(jobs), "--timeout", "600",
-                  "--stop-on-failure"], build, f"{log}.ctest.log", 3600)
-        if rc == 0:
-            break
+# The programs that take longest whole, started first so the lanes end together
+# (tools/shuffled-tests.sh's order, measured there).
+LONGEST = ["test_cli", "test_viewer", "test_render", "test_glman", "test_pipeline", "test_serve", "test_grade"]
+# CTest's native tests that are not a test program's case: scripts and the
+# programs' own listing checks.
+SCRIPT_TESTS = r"^(serve\.|grading\.|test_[a-z]+\.lists_tests$)"
+
+
+def failed_cases(log):
+    """The cases a whole gtest program said failed."""
+    with open(log, errors="replace") as f:
+        return sorted(set(re.findall(r"^\[  FAILED  \] ([\w/]+\.[\w/]+)", f.read(), re.M)))
+
+
+def native_suite(build, jobs, log, done=()):
+    """"" when every native test passes, else what failed. Every test program
+    whole (their cases in one process each, as tools/shuffled-tests.sh runs
+    them; `done`: those that already passed whole for this mutant), `jobs` at
+    a time, the longest first; then CTest's script tests (serve.*, grading.*).
+    A failure must repeat to count: a program's failed cases are run again
+    alone, a program that timed out or failed with no case named is run again
+    whole. The viewer's tests click a real window, and on a machine loaded
+    by other work one failed once unmutated and passed alone. Stops at the
+    first failure that repeats."""
+    tests = os.path.join(build, "tests")
+    found = sorted(f for f in os.listdir(tests) if f.startswith("test_") and os.access(os.path.join(tests, f), os.X_OK)
+                   and os.path.isfile(os.path.join(tests, f)) and f not in done)
+    todo = [p for p in LONGEST if p in found] + [p for p in found if p not in LONGEST]
+    running, flaky = {}, []
+
+    def confirm(program, rc, plog):
+        """A failure's names if it repeats, else ""."""
+        cases = failed_cases(plog) if rc != "timeout" else []
+        again = [os.path.join(tests, program)] + ([f"--gtest_filter={':'.join(cases)}"] if cases else [])
+        if run(again, tests, f"{plog}.again.log", 1200) == 0:
+            flaky.append(f"{program} ({', '.join(cases[:3]) or 'whole'})")
+            return ""
+        what = ", ".join(cases[:5]) if cases else ("timed out" if rc == "timeout" else f"exit {rc}")
+        return f"{program}: {what}"
+
+    try:
+        while todo or running:
+            while todo and len(running) < jobs:
+                program = todo.pop(0)
+                plog = f"{log}.{program}.whole.log"
+                out = open(plog, "w")
+                running[program] = (subprocess.Popen([os.path.join(tests, program)], cwd=tests, stdout=out,
+                                                     stderr=subprocess.STDOUT, start_new_session=True),
+                                    out, plog, time.time())
+            time.sleep(0.5)
+            for program, (proc, out, plog, began) in list(running.items()):
+                rc = proc.poll()
+                if rc is None and time.time() - began > 1800:
+                    os.killpg(proc.pid, 9)
+                    proc.wait()
+                    rc = "timeout"
+                if rc is None:
+                    continue
+                out.close()
+                del running[program]
+                if rc != 0:
+                    failed = confirm(program, rc, plog)
+                    if failed:
+                        return failed
+    finally:
+        for proc, out, _, _ in running.values():
+            os.killpg(proc.pid, 9)
+            proc.wait()
+            out.close()
+    rc = run(["ctest", "--test-dir", build, "-R", SCRIPT_TESTS, "-j", str(jobs), "--timeout", "600"], build,
+             f"{log}.ctest.log", 3600)
+    if rc != 0:
         names = failed_ctest(f"{log}.ctest.log")
-        if run(["ctest", "--test-dir", build, "--rerun-failed", "--timeout", "600"], build,
-               f"{log}.rerun.log", 3600) != 0:
-            return names
+        if run(["ctest", "--test-dir", build, "--rerun-failed", "--timeout", "600"], build, f"{log}.rerun.log", 3600) != 0:
+            return "ctest: " + names
         flaky.append(names)
-    else:
-        return "failed twice, each time a test that passed alone: " + "; ".join(flaky)
     if flaky:
-        print(f"mutate: {', '.join(flaky)} failed and then passed alone (not counted as a kill)", flush=True)
+        print(f"mutate: {'; '.join(flaky)} failed and then passed alone (not counted as a kill)", flush=True)
     return ""
 
 
@@ -389,9 +450,9 @@ class Trial:
                         result, detail = "killed", f"{program} ({'timed out' if rc == 'timeout' else 'exit %s' % rc})"
                         break
                 if result == "survived":
-                    failed = native_suite(build, args.jobs, log)
+                    failed = native_suite(build, args.jobs, log, done=STAGE1[folder])
                     if failed:
-                        result, detail = "killed", "ctest: " + failed
+                        result, detail = "killed", failed
         finally:
             with open(path, "w", encoding="utf-8", newline="") as f:
                 f.write(original)
