@@ -88,7 +88,9 @@ TEST(CommandTable, EveryRowIsFoundByItsSpellingAndDocumented) {
         EXPECT_EQ(lookupCommand(r->name), r->kind) << r->name;
         EXPECT_EQ(commandRule(r->kind), r) << r->name << " has two rows";
         EXPECT_NE(text.find(std::string(r->name)), std::string::npos) << r->name << " is not in docs/glib.md";
-        if (r->minNumbers >= 0) EXPECT_LE(r->minNumbers, r->maxNumbers) << r->name;
+        if (r->minNumbers >= 0) {
+            EXPECT_LE(r->minNumbers, r->maxNumbers) << r->name;
+        }
     }
     EXPECT_EQ(rows, int(CommandKind::QuadBox));  // every kind but Unknown
 }
