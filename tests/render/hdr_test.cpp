@@ -200,6 +200,50 @@ TEST(Hdr, AUnitTheScriptGaveNoTextureReadsNothingAfterAMipChainIsMade) {
     }
 }
 
+// The same after a float read-back between two frames (the viewer's health
+// check and probe read targets as floats after each new picture): the
+// target read is bound for the read, and must not stay bound after it
+// (issue 40's sampled mutant renderer_readback.cpp:34 left texture 1 bound,
+// the first pass's white target here, and the next frame's sampler on
+// unit 0 read white where it read black).
+TEST(Hdr, AUnitTheScriptGaveNoTextureReadsNothingAfterAFloatReadBack) {
+    Scene sc("readbackunbound");
+    std::ofstream(sc.dir / "white.frag") << "#version 330 compatibility\nvoid main() { gl_FragColor = vec4(1.); }\n";
+    std::string s = sc.script("Texture2D 6 8 8 RGBA32F\nTexture2D 7 8 8 RGBA32F\n"
+                              "RenderToTexture 6\nVertex superblur.vert\nFragment white.frag\nProgram White\nQuadXY 0 1\n"
+                              "RenderToTexture 7\nFragment copy.frag\nProgram Stray Src 0\nQuadXY 0 1\n");
+    for (const std::string& backend : testBackends()) {
+        SCOPED_TRACE(backend);
+        Diagnostics diags;
+        LoadedScript loaded;
+        PlanOptions options;
+        options.keepTargets = {6, 7};
+        options.includeDirs.push_back(std::string(GLIMMER_SOURCE_DIR) + "/shaders");
+        ASSERT_TRUE(loadScript(s, options, diags, loaded) && !diags.hasErrors());
+        BackendChoice choice;
+        ASSERT_TRUE(parseBackend(backend, choice));
+        std::string why;
+        auto context = createContext(choice, why);
+        ASSERT_TRUE(context) << why;
+        auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
+        ASSERT_TRUE(renderer) << why;
+        ASSERT_TRUE(loadAndUpload(*renderer, loaded, false, diags));
+        UniformValues values(loaded.plan);
+        auto blackOf = [&](int unit) {
+            Image img = renderer->readTextureFloat(loaded.plan.finalUnits.at(unit));
+            long black = 0;
+            for (size_t i = 0; i < img.f32.size(); ++i) black += i % 4 != 3 && img.f32[i] == 0.f;
+            return black;
+        };
+        for (int frame = 0; frame < 2; ++frame) {
+            SCOPED_TRACE("frame " + std::to_string(frame));
+            renderer->render(values, 0.0);
+            EXPECT_EQ(blackOf(6), 0);          // the first pass drew white
+            EXPECT_EQ(blackOf(7), 8 * 8 * 3);  // and the second read nothing, after a read-back too
+        }
+    }
+}
+
 TEST(Hdr, UnknownFormatIsAnError) {
     Scene sc("badformat");
     std::string s = sc.script("Texture2D 6 8 8 RGB10\n");
