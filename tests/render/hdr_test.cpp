@@ -220,14 +220,9 @@ TEST(Hdr, AUnitTheScriptGaveNoTextureReadsNothingAfterAFloatReadBack) {
         options.keepTargets = {6, 7};
         options.includeDirs.push_back(std::string(GLIMMER_SOURCE_DIR) + "/shaders");
         ASSERT_TRUE(loadScript(s, options, diags, loaded) && !diags.hasErrors());
-        BackendChoice choice;
-        ASSERT_TRUE(parseBackend(backend, choice));
-        std::string why;
-        auto context = createContext(choice, why);
-        ASSERT_TRUE(context) << why;
-        auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
-        ASSERT_TRUE(renderer) << why;
-        ASSERT_TRUE(loadAndUpload(*renderer, loaded, false, diags));
+        Rig rig = makeRig(backend, loaded, diags);
+        ASSERT_TRUE(rig.renderer) << rig.error;
+        Renderer* renderer = rig.renderer.get();
         UniformValues values(loaded.plan);
         auto blackOf = [&](int unit) {
             Image img = renderer->readTextureFloat(loaded.plan.finalUnits.at(unit));

@@ -52,6 +52,35 @@ inline std::vector<std::string> testBackends() {
     return out;
 }
 
+// A context of `backend` with a renderer holding `loaded`, uploaded, or
+// `error` naming the step that failed. For a test that draws more than
+// once, or between reads; renderScript draws once with it.
+struct Rig {
+    std::unique_ptr<GlContext> context;
+    std::unique_ptr<Renderer> renderer;  // destroyed before its context
+    std::string error;
+};
+
+inline Rig makeRig(const std::string& backend, LoadedScript& loaded, Diagnostics& diags) {
+    Rig rig;
+    BackendChoice choice;
+    if (!parseBackend(backend, choice)) {
+        rig.error = "unknown backend '" + backend + "'";
+        return rig;
+    }
+    std::string why;
+    rig.context = createContext(choice, why);
+    GlContext* context = rig.context.get();
+    if (context) rig.renderer = Renderer::create([context](const char* n) { return context->getProcAddress(n); }, why);
+    if (!rig.renderer) {
+        rig.error = "backend '" + backend + "' is unusable: " + why;
+    } else if (!loadAndUpload(*rig.renderer, loaded, false, diags)) {
+        rig.error = "prepare failed";
+        rig.renderer.reset();
+    }
+    return rig;
+}
+
 inline Rendered renderScript(const std::string& backendName, const std::string& script,
                              const std::vector<std::string>& sets, const std::vector<int>& readUnits,
                              PlanOptions options = {}) {
@@ -71,14 +100,9 @@ inline Rendered renderScript(const std::string& backendName, const std::string& 
     for (const auto& s : sets)
         if (!values.applySet(loaded.plan, s, diags)) return fail("--set " + s);
 
-    BackendChoice choice;
-    if (!parseBackend(backendName, choice)) return fail("unknown backend '" + backendName + "'");
-    std::string why;
-    auto context = createContext(choice, why);
-    if (!context) return fail("backend '" + backendName + "' is unusable: " + why);
-    auto renderer = Renderer::create([&](const char* n) { return context->getProcAddress(n); }, why);
-    if (!renderer) return fail("backend '" + backendName + "' is unusable: " + why);
-    if (!loadAndUpload(*renderer, loaded, false, diags)) return fail("prepare failed");
+    Rig rig = makeRig(backendName, loaded, diags);
+    if (!rig.renderer) return fail(rig.error);
+    Renderer* renderer = rig.renderer.get();
     renderer->render(values, 0.0);
     r.screen = renderer->readScreen();
     for (int u : readUnits) {

@@ -28,19 +28,14 @@ std::unique_ptr<Prepared> prepare(const std::string& script, int size) {
     options.width = options.height = size;
     options.keepTargets = {5, 6};
     options.includeDirs.push_back(std::string(GLIMMER_SOURCE_DIR) + "/shaders");
-    BackendChoice choice;
-    const std::string backend = testBackends().front();
-    if (!loadScript(script, options, diags, p->loaded) || diags.hasErrors() || !parseBackend(backend, choice)) {
-        p->error = "script did not load, or backend '" + backend + "' unknown";
+    if (!loadScript(script, options, diags, p->loaded) || diags.hasErrors()) {
+        p->error = "script did not load";
         return p;
     }
-    p->context = createContext(choice, p->error);
-    if (!p->context) return p;
-    p->renderer = Renderer::create([&](const char* n) { return p->context->getProcAddress(n); }, p->error);
-    if (p->renderer && !loadAndUpload(*p->renderer, p->loaded, false, diags)) {
-        p->error = "prepare failed";
-        p->renderer.reset();
-    }
+    Rig rig = makeRig(testBackends().front(), p->loaded, diags);
+    p->context = std::move(rig.context);
+    p->renderer = std::move(rig.renderer);
+    p->error = rig.error;
     return p;
 }
 

@@ -73,30 +73,8 @@ void expectSameStats(const WatchStats& gpu, const WatchStats& cpu) {
     EXPECT_EQ(watchSummary(gpu), watchSummary(cpu));
 }
 
-// A context of `backend` with a renderer holding `loaded`, or `error`.
-struct Rig {
-    std::unique_ptr<GlContext> context;
-    std::unique_ptr<Renderer> renderer;  // destroyed before its context
-    std::string error;
-};
-
-Rig makeRig(const std::string& backend, LoadedScript& loaded, Diagnostics& diags) {
-    Rig rig;
-    BackendChoice choice;
-    if (!parseBackend(backend, choice)) {
-        rig.error = "unknown backend " + backend;
-        return rig;
-    }
-    rig.context = createContext(choice, rig.error);
-    if (!rig.context) return rig;
-    GlContext* context = rig.context.get();
-    rig.renderer = Renderer::create([context](const char* n) { return context->getProcAddress(n); }, rig.error);
-    if (rig.renderer && !loadAndUpload(*rig.renderer, loaded, false, diags)) {
-        rig.error = "the script did not upload";
-        rig.renderer.reset();
-    }
-    return rig;
-}
+using testing::makeRig;
+using testing::Rig;
 
 TEST(WatchGpu, CountsAndPictureEqualTheCpuReferenceOnTheSameFloats) {
     testing::TestFolder dir("watch_gpu");

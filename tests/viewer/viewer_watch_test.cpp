@@ -138,6 +138,11 @@ TEST(ViewerWatch, ThePanelsWatchControlsClickedDoWhatTheirCommandsDo) {
     auto x = findViewer(p.dir);
     ASSERT_TRUE(x) << v.log();
     std::map<std::string, int> asked;  // how often each control's place was asked for
+    auto countIn = [](const std::string& log, const std::string& needle) {
+        int n = 0;
+        for (size_t at = log.find(needle); at != std::string::npos; at = log.find(needle, at + 1)) ++n;
+        return n;
+    };
     // Clicks `name` at `fraction` of its width, where the viewer says it is now.
     // Asked again while the panel is not drawn yet (a loaded machine: the
     // first frame's panel comes after the line the test starts on).
@@ -149,9 +154,8 @@ TEST(ViewerWatch, ThePanelsWatchControlsClickedDoWhatTheirCommandsDo) {
             found = v.waitForLog(said, asked[name] + 1, std::chrono::seconds(3));
         }
         if (!found) return false;
-        asked[name] = 0;
-        for (size_t at = v.log().find(said); at != std::string::npos; at = v.log().find(said, at + 1)) ++asked[name];
         const std::string log = v.log();
+        asked[name] = countIn(log, said);
         double cx = 0, cy = 0, w = 0, h = 0;
         std::istringstream in(log.substr(log.rfind(said) + said.size()));
         if (!(in >> cx >> cy >> w >> h)) return false;
@@ -174,12 +178,9 @@ TEST(ViewerWatch, ThePanelsWatchControlsClickedDoWhatTheirCommandsDo) {
         for (int attempt = 0; attempt < 5 && !active; ++attempt) {
             if (!click(name, fraction)) return false;
             const std::string before = v.log();
-            int panels = 0;
-            for (size_t at = before.find("glimmer view: panel "); at != std::string::npos;
-                 at = before.find("glimmer view: panel ", at + 1))
-                ++panels;
             v.send("panel");
-            if (!v.waitForLog("glimmer view: panel ", panels + 1, std::chrono::seconds(10))) continue;
+            if (!v.waitForLog("glimmer view: panel ", countIn(before, "glimmer view: panel ") + 1, std::chrono::seconds(10)))
+                continue;
             active = v.log().find(" active=" + word + " ", before.size()) != std::string::npos;
         }
         if (!active) return false;
