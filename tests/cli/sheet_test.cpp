@@ -19,9 +19,11 @@ std::optional<std::pair<int, int>> findCell(const glimmer::Image& sheet, const g
         for (int x0 = std::max(fromX, 0); x0 + cell.width <= sheet.width; ++x0) {
             bool same = true;
             for (int y = 0; y < cell.height && same; ++y)
-                same = std::equal(&cell.u8[size_t(y) * size_t(cell.width) * 4],
-                                  &cell.u8[size_t(y + 1) * size_t(cell.width) * 4],
-                                  &sheet.u8[(size_t(y0 + y) * size_t(sheet.width) + size_t(x0)) * 4]);
+                // Pointers, not &v[i]: the last row's end is one past the vector's
+                // end, which the bounds-checked operator[] refuses.
+                same = std::equal(cell.u8.data() + size_t(y) * size_t(cell.width) * 4,
+                                  cell.u8.data() + size_t(y + 1) * size_t(cell.width) * 4,
+                                  sheet.u8.data() + (size_t(y0 + y) * size_t(sheet.width) + size_t(x0)) * 4);
             if (same) return std::make_pair(x0, y0);
         }
     return std::nullopt;
