@@ -173,14 +173,16 @@ TEST_F(GlmanPlanTest, TextureCommandErrors) {
         "Texture3D 5 4 4\n"
         "Texture3D 5 4 4 0\n"
         "CubeMap 6 img.bmp img.bmp img.bmp img.bmp img.bmp img.bmp\n"
-        "RenderToTexture 6\n");
+        "RenderToTexture 6\n"
+        "CubeMap 6\n");
     auto e = errors(p.diags);
-    ASSERT_EQ(e.size(), 5u);
+    ASSERT_EQ(e.size(), 6u);
     EXPECT_EQ(e[0], "CubeMap needs a unit and six files, +x -x +y -y +z -z; got 3 arguments");
     EXPECT_EQ(e[1].rfind("cannot find texture 'nothere.bmp'", 0), 0u) << e[1];
     EXPECT_EQ(e[2], "Texture3D needs a unit and a raw .tex file, or a unit, a width, a height and a depth");
     EXPECT_EQ(e[3], "a texture's size must be between 1 and 2048 each way");
     EXPECT_EQ(e[4], "unit 6 holds a cube map; render into an empty texture made with Texture2D 6 width height");
+    EXPECT_EQ(e[5], "CubeMap needs a unit and six files, +x -x +y -y +z -z; got 1 argument");  // one, not "1 arguments"
 }
 
 TEST_F(GlmanPlanTest, TessellationStagesJoinTheProgram) {
