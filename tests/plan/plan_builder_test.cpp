@@ -524,5 +524,15 @@ TEST_F(PlanTest, MessageBoxTextIsANoteOnTheNextProgram) {
     EXPECT_EQ(p.plan.programs[1].notes, "");  // each text goes to one Program only
 }
 
+// The panel shows a Program's notes under its name: only MessageBox text and
+// the script's comments, never another command's arguments (a Timer's period).
+TEST_F(PlanTest, ATimerBeforeAProgramIsNoNoteOnIt) {
+    Planned p = run("Vertex a.vert\nFragment a.frag\nTimer 4\nProgram Spin\nQuadXY 0 1\n");
+    EXPECT_EQ(messages(p.diags), V{});
+    EXPECT_EQ(p.plan.timerPeriod, 4.0);
+    ASSERT_EQ(p.plan.programs.size(), 1u);
+    EXPECT_EQ(p.plan.programs[0].notes, "");
+}
+
 }  // namespace
 }  // namespace glimmer::test
