@@ -52,7 +52,7 @@ struct Comparison {
     double worstTile = 1;  // the lowest mean SSIM of a kTileSide tile (both: no local error, unless measured)
 };
 
-// Both RGBA8. A size mismatch compares as PSNR 0, SSIM 0.
+// Both RGBA8. A size mismatch or a float picture compares as PSNR 0, SSIM 0.
 Comparison comparePictures(const Image& student, const Image& solution);
 
 // Comparison::blank alone, without the measures (grading's recheck asks it

@@ -63,6 +63,22 @@ TEST(Grading, TheSamePictureIsIdenticalAndAShiftedOneIsClose) {
     EXPECT_EQ(sizes.psnr, 0.0);
 }
 
+// Grading compares bytes: a float picture (what an .hdr or .exr loads as) is
+// not compared, whichever side it is on, even when its values are the bytes'.
+TEST(Grading, AFloatPictureIsNotComparedAsBytes) {
+    Image bytes = gradient(32, 32);
+    Image floats = Image::rgbaF32(32, 32);
+    for (size_t i = 0; i < bytes.u8.size(); ++i) floats.f32[i] = float(bytes.u8[i]) / 255.f;
+    for (auto [student, solution] : {std::pair{&floats, &bytes}, std::pair{&bytes, &floats}}) {
+        Comparison c = comparePictures(*student, *solution);
+        EXPECT_EQ(c.psnr, 0.0);
+        EXPECT_EQ(c.ssim, 0.0);
+        EXPECT_FALSE(c.blank);
+    }
+    // All black as floats against a solution that is not one colour: not "blank" either.
+    EXPECT_FALSE(blankAgainst(Image::rgbaF32(32, 32), bytes));
+}
+
 TEST(Grading, TheDifferencePictureShowsSmallErrorsFourTimes) {
     Image a = Image::rgba8(1, 1), b = Image::rgba8(1, 1);
     a.u8 = {10, 200, 0, 255};
