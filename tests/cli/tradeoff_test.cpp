@@ -69,6 +69,9 @@ TEST(CliTradeoff, KeepsTheSpreadOfTheRuns) {
     std::getline(csv, header);
     EXPECT_NE(header.find(",above_65504,ms_min,ms_max,runs,target_sigma,floor_ms"), std::string::npos) << header;
     EXPECT_NE(r.out.find("texel-rate floor: "), std::string::npos) << r.out;
+    // osmesa is llvmpipe, a CPU renderer: timed by glFinish and a wall clock (no GPU timer queries), and the
+    // floor's line says why a method of few taps a pass can run under it there.
+    EXPECT_NE(r.out.find("; on a CPU renderer shading, not fetching, sets the pace"), std::string::npos) << r.out;
     int rows = 0;
     std::vector<double> floorPerTap;
     while (std::getline(csv, line)) {
