@@ -99,6 +99,8 @@ EQUIVALENT = {
                                          "they go when the watch stops or the size changes",
     "src/plan/plan_shapes.cpp:44:27e3c854": "of the shapes made from numbers (geometry/shape_registry.cpp), only WireTorus "
                                             "sorts at or after \"WireTorus\" (WireBox ... WireTeapot all before it)",
+    "src/shader/glsl_lexer.cpp:104:a54b00f9": "a word's end starts at i + 1 <= size (i < size is checked first) and "
+                                              "grows by one: `end < size` and `end != size` stop it at the same place",
 }
 JOURNAL = ".sample-journal.json"
 
