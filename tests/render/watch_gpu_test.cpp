@@ -254,5 +254,68 @@ QuadXY 0 2
     }
 }
 
+// Issue 40's sampled mutant watch_gpu.cpp:222 (the watch's targets made from
+// k = -1: the name before them, 0, was given an 8-bit image of the watch's
+// size, so texture 0 was no longer empty). A watch changes no picture: a
+// sampler on a unit the script gave no texture reads GL's (0, 0, 0, 1) for an
+// empty texture before a watch, while it is drawn and after it stops.
+TEST(WatchGpu, AWatchLeavesAUnitWithNoTextureEmpty) {
+    testing::TestFolder dir("watch_gpu_empty_unit");
+    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "cli/watch/quad.vert", dir.path / "quad.vert",
+                  fs::copy_options::overwrite_existing);
+    std::ofstream(dir.path / "none.frag") << R"(#version 330 compatibility
+uniform sampler2D uNone;
+in vec2 vST;
+void main( )
+{
+    vec4 t = texture( uNone, vST );
+    gl_FragColor = vec4( t.a, t.r, 0.25, 1. );
+}
+)";
+    std::ofstream(dir.path / "none.glib") << R"(##OpenGL GLIB
+Ortho -1 1 -1 1
+LookAt 0 0 1  0 0 0  0 1 0
+Vertex quad.vert
+Fragment none.frag
+Program None
+    uNone 5
+QuadXY 0 2
+)";
+    for (const std::string& backend : testing::testBackends()) {
+        SCOPED_TRACE(backend);
+        PlanOptions options;
+        options.width = options.height = 16;
+        Diagnostics diags;
+        LoadedScript loaded;
+        ASSERT_TRUE(loadScript((dir.path / "none.glib").string(), options, diags, loaded));
+        UniformValues values(loaded.plan);
+        Rig rig = makeRig(backend, loaded, diags);
+        ASSERT_TRUE(rig.renderer) << rig.error;
+        auto emptyEverywhere = [](const Image& picture) {
+            int empty = 0;
+            for (size_t p = 0; p + 3 < picture.u8.size(); p += 4)
+                empty += picture.u8[p] == 255 && picture.u8[p + 1] == 0;  // t.a = 1, t.r = 0
+            return empty;
+        };
+        rig.renderer->render(values, 0.0);
+        const Image before = rig.renderer->readScreen();
+        ASSERT_EQ(emptyEverywhere(before), 16 * 16);
+
+        std::string why;
+        WatchSpec spec;
+        ASSERT_TRUE(parseWatchSpec("none.frag:6:t", spec, why)) << why;
+        Watch watch;
+        ASSERT_TRUE(startWatch(spec, loaded.plan, *rig.renderer, diags, watch));
+        const WatchFrame frame = drawWatch(*rig.renderer, watch, values, 0);
+        ASSERT_TRUE(frame.drawn);
+        EXPECT_EQ(frame.stats.lo, frame.stats.hi);  // every pixel read the same
+        rig.renderer->render(values, 0.0);
+        EXPECT_EQ(emptyEverywhere(rig.renderer->readScreen()), 16 * 16) << "while watching";
+        rig.renderer->dropWatch();
+        rig.renderer->render(values, 0.0);
+        EXPECT_EQ(rig.renderer->readScreen().u8, before.u8) << "after the watch stopped";
+    }
+}
+
 }  // namespace
 }  // namespace glimmer
