@@ -101,6 +101,9 @@ EQUIVALENT = {
                                             "sorts at or after \"WireTorus\" (WireBox ... WireTeapot all before it)",
     "src/shader/glsl_lexer.cpp:104:a54b00f9": "a word's end starts at i + 1 <= size (i < size is checked first) and "
                                               "grows by one: `end < size` and `end != size` stop it at the same place",
+    "src/plan/plan.h:77:e647a978": "Wrap's Repeat and Clamp swap numbers, and no code reads one as a number: each is "
+                                   "named where set, compared and turned into GL's (glWrap's switch); the one `Wrap w{}` "
+                                   "is overwritten by parseTextureWrap or dropped with its error",
 }
 JOURNAL = ".sample-journal.json"
 

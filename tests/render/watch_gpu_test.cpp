@@ -317,5 +317,53 @@ QuadXY 0 2
     }
 }
 
+// Issue 40's sampled mutant renderer.cpp:38 (the watch's three programs no
+// longer deleted with their renderer). The page makes a new renderer on its
+// one context for every picture (web/web_render.cpp): a watched lesson
+// reloaded many times must not pile up programs on the student's GPU.
+TEST(WatchGpu, ARendererMadeAgainOnOneContextLeavesNoProgramsBehind) {
+    for (const std::string& backend : testing::testBackends()) {
+        SCOPED_TRACE(backend);
+        PlanOptions options;
+        options.width = options.height = 8;
+        Diagnostics diags;
+        LoadedScript loaded;
+        ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded));
+        UniformValues values(loaded.plan);
+        Rig rig = makeRig(backend, loaded, diags);
+        ASSERT_TRUE(rig.renderer) << rig.error;
+        GlContext* context = rig.context.get();
+        using IsProgram = unsigned char (*)(unsigned);
+        auto isProgram = reinterpret_cast<IsProgram>(context->getProcAddress("glIsProgram"));
+        ASSERT_NE(isProgram, nullptr);
+        auto livePrograms = [&] {
+            int live = 0;
+            for (unsigned name = 1; name < 512; ++name) live += isProgram(name) ? 1 : 0;
+            return live;
+        };
+        std::vector<int> live;
+        for (int picture = 0; picture < 4; ++picture) {
+            if (picture > 0) {  // as the page: the last renderer goes, a new one takes the context
+                rig.renderer.reset();
+                rig.renderer = Renderer::create([context](const char* n) { return context->getProcAddress(n); },
+                                                rig.error);
+                ASSERT_TRUE(rig.renderer) << rig.error;
+                LoadedScript again;
+                ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, again));
+                ASSERT_TRUE(loadAndUpload(*rig.renderer, again, false, diags));
+                loaded = std::move(again);
+            }
+            std::string why;
+            WatchSpec spec;
+            ASSERT_TRUE(parseWatchSpec("bloom.frag:12:rgbblur", spec, why)) << why;
+            Watch watch;
+            ASSERT_TRUE(startWatch(spec, loaded.plan, *rig.renderer, diags, watch));
+            ASSERT_TRUE(drawWatch(*rig.renderer, watch, values, 0).drawn);
+            live.push_back(livePrograms());
+        }
+        EXPECT_EQ(live, std::vector<int>(4, live.front()));
+    }
+}
+
 }  // namespace
 }  // namespace glimmer
