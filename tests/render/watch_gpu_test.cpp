@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include "backends/context.h"
@@ -126,16 +127,16 @@ TEST(WatchGpu, CountsAndPictureEqualTheCpuReferenceOnTheSameFloats) {
             ASSERT_EQ(floats.value.height, c.height);
             const WatchStats cpu = watchStats(floats.value, floats.info, c.range);
             const std::string has = c.has;
-            if (has.find("nan") != std::string::npos) EXPECT_GT(cpu.nan, 0);
-            if (has.find("inf") != std::string::npos) EXPECT_GT(cpu.inf, 0);
-            if (has.find("below") != std::string::npos) EXPECT_GT(cpu.below, 0);
-            if (has.find("above") != std::string::npos) EXPECT_GT(cpu.above, 0);
-            if (has.find("not-run") != std::string::npos) EXPECT_LT(cpu.reached, cpu.drawn);
-            if (has.find("not-drawn") != std::string::npos) EXPECT_LT(cpu.drawn, c.width * c.height);
-            if (has.find("vec2") != std::string::npos) EXPECT_EQ(cpu.components, 2);
-            if (has.find("vec4") != std::string::npos) EXPECT_EQ(cpu.components, 4);
-            if (has.find("int") != std::string::npos) EXPECT_EQ(cpu.kind, 1);
-            if (has.find("bool") != std::string::npos) EXPECT_EQ(cpu.kind, 3);
+            if (has.find("nan") != std::string::npos) { EXPECT_GT(cpu.nan, 0); }
+            if (has.find("inf") != std::string::npos) { EXPECT_GT(cpu.inf, 0); }
+            if (has.find("below") != std::string::npos) { EXPECT_GT(cpu.below, 0); }
+            if (has.find("above") != std::string::npos) { EXPECT_GT(cpu.above, 0); }
+            if (has.find("not-run") != std::string::npos) { EXPECT_LT(cpu.reached, cpu.drawn); }
+            if (has.find("not-drawn") != std::string::npos) { EXPECT_LT(cpu.drawn, c.width * c.height); }
+            if (has.find("vec2") != std::string::npos) { EXPECT_EQ(cpu.components, 2); }
+            if (has.find("vec4") != std::string::npos) { EXPECT_EQ(cpu.components, 4); }
+            if (has.find("int") != std::string::npos) { EXPECT_EQ(cpu.kind, 1); }
+            if (has.find("bool") != std::string::npos) { EXPECT_EQ(cpu.kind, 3); }
             expectSameStats(frame.stats, cpu);
 
             const Image want = watchPicture(floats.value, floats.info, cpu);
@@ -198,6 +199,26 @@ TEST(WatchGpu, StoppingAWatchLeavesTheScriptsTexturesAndItsPicture) {
     }
 }
 
+// A script of one pass in `dir`: a quad (the watch tests' quad.vert) drawn
+// by Program `program` of `frag`, its sampler `sampler` set to `unit`, a
+// unit the script gives no texture. The .glib's path.
+fs::path quadWithSampler(const testing::TestFolder& dir, const std::string& program, const std::string& frag,
+                         const std::string& sampler, int unit) {
+    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "cli/watch/quad.vert", dir.path / "quad.vert",
+                  fs::copy_options::overwrite_existing);
+    std::ofstream(dir.path / (program + ".frag")) << frag;
+    std::ofstream(dir.path / (program + ".glib")) << fmt::format(R"(##OpenGL GLIB
+Ortho -1 1 -1 1
+LookAt 0 0 1  0 0 0  0 1 0
+Vertex quad.vert
+Fragment {0}.frag
+Program {0}
+    {1} {2}
+QuadXY 0 2
+)", program, sampler, unit);
+    return dir.path / (program + ".glib");
+}
+
 // Issue 40's sampled mutant watch_gpu.cpp:293 (the reduction's last merge
 // unbinding three of the four units it bound): a watch leaves every unit as
 // it found it, so a still scene watched frame after frame is the same watch.
@@ -207,9 +228,7 @@ TEST(WatchGpu, StoppingAWatchLeavesTheScriptsTexturesAndItsPicture) {
 // the second frame's watched value would read them.
 TEST(WatchGpu, AStillSceneWatchedTwiceIsTheSameWatch) {
     testing::TestFolder dir("watch_gpu_units");
-    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "cli/watch/quad.vert", dir.path / "quad.vert",
-                  fs::copy_options::overwrite_existing);
-    std::ofstream(dir.path / "stray.frag") << R"(#version 330 compatibility
+    const fs::path script = quadWithSampler(dir, "stray", R"(#version 330 compatibility
 uniform usampler2D uStray;
 in vec2 vST;
 void main( )
@@ -217,23 +236,14 @@ void main( )
     uvec4 u = texture( uStray, vST );
     gl_FragColor = vec4( vec3( u.rgb ), 1. );
 }
-)";
-    std::ofstream(dir.path / "stray.glib") << R"(##OpenGL GLIB
-Ortho -1 1 -1 1
-LookAt 0 0 1  0 0 0  0 1 0
-Vertex quad.vert
-Fragment stray.frag
-Program Stray
-    uStray 3
-QuadXY 0 2
-)";
+)", "uStray", 3);
     for (const std::string& backend : testing::testBackends()) {
         SCOPED_TRACE(backend);
         PlanOptions options;
         options.width = 260, options.height = 300;
         Diagnostics diags;
         LoadedScript loaded;
-        ASSERT_TRUE(loadScript((dir.path / "stray.glib").string(), options, diags, loaded));
+        ASSERT_TRUE(loadScript(script.string(), options, diags, loaded));
         UniformValues values(loaded.plan);
         Rig rig = makeRig(backend, loaded, diags);
         ASSERT_TRUE(rig.renderer) << rig.error;
@@ -261,9 +271,7 @@ QuadXY 0 2
 // empty texture before a watch, while it is drawn and after it stops.
 TEST(WatchGpu, AWatchLeavesAUnitWithNoTextureEmpty) {
     testing::TestFolder dir("watch_gpu_empty_unit");
-    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "cli/watch/quad.vert", dir.path / "quad.vert",
-                  fs::copy_options::overwrite_existing);
-    std::ofstream(dir.path / "none.frag") << R"(#version 330 compatibility
+    const fs::path script = quadWithSampler(dir, "none", R"(#version 330 compatibility
 uniform sampler2D uNone;
 in vec2 vST;
 void main( )
@@ -271,23 +279,14 @@ void main( )
     vec4 t = texture( uNone, vST );
     gl_FragColor = vec4( t.a, t.r, 0.25, 1. );
 }
-)";
-    std::ofstream(dir.path / "none.glib") << R"(##OpenGL GLIB
-Ortho -1 1 -1 1
-LookAt 0 0 1  0 0 0  0 1 0
-Vertex quad.vert
-Fragment none.frag
-Program None
-    uNone 5
-QuadXY 0 2
-)";
+)", "uNone", 5);
     for (const std::string& backend : testing::testBackends()) {
         SCOPED_TRACE(backend);
         PlanOptions options;
         options.width = options.height = 16;
         Diagnostics diags;
         LoadedScript loaded;
-        ASSERT_TRUE(loadScript((dir.path / "none.glib").string(), options, diags, loaded));
+        ASSERT_TRUE(loadScript(script.string(), options, diags, loaded));
         UniformValues values(loaded.plan);
         Rig rig = makeRig(backend, loaded, diags);
         ASSERT_TRUE(rig.renderer) << rig.error;
