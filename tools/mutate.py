@@ -126,6 +126,17 @@ def recover(build):
     return ok
 
 
+def kill_session(pid):
+    """Ends the session `pid` leads, every process group in it: a test
+    program's viewer under xvfb-run is a group of its own, and killing the
+    program's group alone left it and its Xvfb running, orphaned."""
+    try:
+        os.killpg(pid, signal.SIGKILL)
+    except ProcessLookupError:
+        pass
+    subprocess.run(["pkill", "-KILL", "-s", str(pid)], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+
+
 def run_logged(cmd, cwd, log, timeout=None):
     """Runs `cmd` in a session of its own (so a timeout or Ctrl-C ends its
     children too); returns (exit status or 'timeout', output)."""
@@ -134,14 +145,11 @@ def run_logged(cmd, cwd, log, timeout=None):
         try:
             rc = p.wait(timeout=timeout)
         except subprocess.TimeoutExpired:
-            os.killpg(p.pid, signal.SIGKILL)
+            kill_session(p.pid)
             p.wait()
             rc = "timeout"
         except BaseException:
-            try:
-                os.killpg(p.pid, signal.SIGKILL)
-            except ProcessLookupError:
-                pass
+            kill_session(p.pid)
             p.wait()
             raise
     with open(log, errors="replace") as f:

@@ -68,7 +68,7 @@ RULES = ["universal.rules", "cpp.rules", "c_like.rules"]
 # they kill most mutants in seconds.
 STAGE1 = {"plan": ["test_plan"], "shader": ["test_shader"], "gl": ["test_shaderlog", "test_render"],
           "grade": ["test_grade"], "process": ["test_render", "test_glman"], "pipeline": ["test_pipeline"]}
-from mutate import REPO  # noqa: E402  (the repository both modes work in)
+from mutate import REPO, kill_session  # noqa: E402  (the repository both modes work in)
 
 # Tracked: the campaign's record outlives the build folder (see Resumable).
 RECORD = os.path.join(REPO, "tools", "mutate-sample")
@@ -252,7 +252,7 @@ def native_suite(build, jobs, log, done=()):
             for program, (proc, out, plog, began) in list(running.items()):
                 rc = proc.poll()
                 if rc is None and time.time() - began > 1800:
-                    os.killpg(proc.pid, 9)
+                    kill_session(proc.pid)
                     proc.wait()
                     rc = "timeout"
                 if rc is None:
@@ -265,7 +265,7 @@ def native_suite(build, jobs, log, done=()):
                         return failed
     finally:
         for proc, out, _, _ in running.values():
-            os.killpg(proc.pid, 9)
+            kill_session(proc.pid)
             proc.wait()
             out.close()
     rc = run(["ctest", "--test-dir", build, "-R", SCRIPT_TESTS, "-j", str(jobs), "--timeout", "600"], build,
