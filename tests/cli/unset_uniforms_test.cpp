@@ -50,5 +50,21 @@ TEST(CliUnsetUniforms, WhatGlimmerFeedsIsNotUnset) {
     EXPECT_EQ(r.err, "") << r.err;
 }
 
+// An integer vector's example is GLIB's bracket form with one whole number a
+// component.
+TEST(CliUnsetUniforms, IntegerVectorsGetTheirBracketExample) {
+    TempDir dir;
+    const std::string script = dir.file("ints.glib");
+    std::ofstream(dir.file("ints.frag")) << "#version 330 compatibility\nuniform ivec2 uA;\nuniform ivec3 uB;\n"
+                                            "uniform ivec4 uC;\nin vec2 vST;\nvoid main() { gl_FragColor = "
+                                            "vec4(float(uA.x + uB.y + uC.z), 0., 0., 1.); }\n";
+    std::ofstream(script) << "Vertex st.vert\nFragment ints.frag\nProgram Ints\nQuadXY 0 1\n";
+    auto r = runGlimmer({"check", script, "--backend", "osmesa", "-I", cliData("")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    for (const char* want : {"uniform ivec2 uA (ints.frag:2)", ", e.g. 'uA [1 1]'\n", "uniform ivec3 uB (ints.frag:3)",
+                             ", e.g. 'uB [1 1 1]'\n", "uniform ivec4 uC (ints.frag:4)", ", e.g. 'uC [1 1 1 1]'\n"})
+        EXPECT_NE(r.err.find(want), std::string::npos) << want << "\n" << r.err;
+}
+
 }  // namespace
 }  // namespace glimmer_cli
