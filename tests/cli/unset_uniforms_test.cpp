@@ -10,6 +10,15 @@
 namespace glimmer_cli {
 namespace {
 
+// `glimmer check` of a script in `dir` drawing one quad with Program `name`:
+// the tests' st.vert and `frag`, written as NAME.frag.
+RunResult checkOneProgram(const TempDir& dir, const std::string& name, const std::string& frag) {
+    std::ofstream(dir.file(name + ".frag")) << frag;
+    std::ofstream(dir.file(name + ".glib")) << "Vertex st.vert\nFragment " << name << ".frag\nProgram " << name
+                                            << "\nQuadXY 0 1\n";
+    return runGlimmer({"check", dir.file(name + ".glib"), "--backend", "osmesa", "-I", cliData("")});
+}
+
 TEST(CliUnsetUniforms, EachIsNamedWithItsDeclarationAndWhereItsValueGoes) {
     const std::string script = cliData("unset_uniforms.glib");
     auto r = runGlimmer({"check", script, "--backend", "osmesa"});
@@ -40,12 +49,9 @@ TEST(CliUnsetUniforms, SettingThemSilencesIt) {
 // What Glimmer itself feeds (Timer, the built-in noise) is never "unset".
 TEST(CliUnsetUniforms, WhatGlimmerFeedsIsNotUnset) {
     TempDir dir;
-    const std::string script = dir.file("fed.glib");
-    std::ofstream(dir.file("fed.frag")) << "#version 330 compatibility\nuniform float Timer;\nuniform sampler2D Noise2;\n"
-                                           "in vec2 vST;\nvoid main() { gl_FragColor = vec4(Timer, "
-                                           "texture(Noise2, vST).r, 0., 1.); }\n";
-    std::ofstream(script) << "Vertex st.vert\nFragment fed.frag\nProgram Fed\nQuadXY 0 1\n";
-    auto r = runGlimmer({"check", script, "--backend", "osmesa", "-I", cliData("")});
+    auto r = checkOneProgram(dir, "Fed",
+                             "#version 330 compatibility\nuniform float Timer;\nuniform sampler2D Noise2;\n"
+                             "in vec2 vST;\nvoid main() { gl_FragColor = vec4(Timer, texture(Noise2, vST).r, 0., 1.); }\n");
     EXPECT_EQ(r.exitCode, 0) << r.err;
     EXPECT_EQ(r.err, "") << r.err;
 }
@@ -54,15 +60,12 @@ TEST(CliUnsetUniforms, WhatGlimmerFeedsIsNotUnset) {
 // component.
 TEST(CliUnsetUniforms, IntegerVectorsGetTheirBracketExample) {
     TempDir dir;
-    const std::string script = dir.file("ints.glib");
-    std::ofstream(dir.file("ints.frag")) << "#version 330 compatibility\nuniform ivec2 uA;\nuniform ivec3 uB;\n"
-                                            "uniform ivec4 uC;\nin vec2 vST;\nvoid main() { gl_FragColor = "
-                                            "vec4(float(uA.x + uB.y + uC.z), 0., 0., 1.); }\n";
-    std::ofstream(script) << "Vertex st.vert\nFragment ints.frag\nProgram Ints\nQuadXY 0 1\n";
-    auto r = runGlimmer({"check", script, "--backend", "osmesa", "-I", cliData("")});
+    auto r = checkOneProgram(dir, "Ints",
+                             "#version 330 compatibility\nuniform ivec2 uA;\nuniform ivec3 uB;\nuniform ivec4 uC;\n"
+                             "in vec2 vST;\nvoid main() { gl_FragColor = vec4(float(uA.x + uB.y + uC.z), 0., 0., 1.); }\n");
     EXPECT_EQ(r.exitCode, 0) << r.err;
-    for (const char* want : {"uniform ivec2 uA (ints.frag:2)", ", e.g. 'uA [1 1]'\n", "uniform ivec3 uB (ints.frag:3)",
-                             ", e.g. 'uB [1 1 1]'\n", "uniform ivec4 uC (ints.frag:4)", ", e.g. 'uC [1 1 1 1]'\n"})
+    for (const char* want : {"uniform ivec2 uA (Ints.frag:2)", ", e.g. 'uA [1 1]'\n", "uniform ivec3 uB (Ints.frag:3)",
+                             ", e.g. 'uB [1 1 1]'\n", "uniform ivec4 uC (Ints.frag:4)", ", e.g. 'uC [1 1 1 1]'\n"})
         EXPECT_NE(r.err.find(want), std::string::npos) << want << "\n" << r.err;
 }
 
