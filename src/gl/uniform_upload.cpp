@@ -129,6 +129,10 @@ std::string uniformTypeName(GLenum type) {
     case GL_INT_VEC2: return "ivec2";
     case GL_INT_VEC3: return "ivec3";
     case GL_INT_VEC4: return "ivec4";
+    case GL_UNSIGNED_INT: return "uint";
+    case GL_UNSIGNED_INT_VEC2: return "uvec2";
+    case GL_UNSIGNED_INT_VEC3: return "uvec3";
+    case GL_UNSIGNED_INT_VEC4: return "uvec4";
     case GL_BOOL: return "bool";
     case GL_BOOL_VEC2: return "bvec2";
     case GL_BOOL_VEC3: return "bvec3";

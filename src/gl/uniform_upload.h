@@ -43,8 +43,8 @@ std::vector<double> convertUniform(UniformSetting::Form form, const ActiveUnifor
 
 bool isSamplerType(GLenum type);
 
-// A uniform's type as GLSL spells it ("float", "vec3", "mat4"); "sampler"
-// for any sampler, "another type" for the rest.
+// A uniform's type as GLSL spells it ("float", "vec3", "mat4", "uvec2");
+// "sampler" for any sampler, "another type" for the rest.
 std::string uniformTypeName(GLenum type);
 
 // A sampler type as GLSL spells it ("sampler2D", "isampler3D",

@@ -88,6 +88,21 @@ TEST(GlmanCheck, MoreUniformFormsAreConvertedAsTheWarningsSay) {
     EXPECT_EQ(rgb(5), (std::vector<int>{51, 102, 153}));   // uW[0..2]
 }
 
+// A type no GLIB form can set (an unsigned int) is named in its warning and
+// left at 0: the picture shows the 0, not the script's numbers.
+TEST(GlmanCheck, UniformsOfATypeNoFormSetsAreWarnedAndLeftAtZero) {
+    auto r = runPipeline(script("uniform_not_set"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              (std::vector<std::string>{
+                  "uniform 'uCount' is given a range but its shader declares it uint; it is not set",
+                  "uniform 'uPair' is given an array but its shader declares it uvec2; it is not set"}));
+    const std::uint8_t* left = pixel(r->screen, 24, 48);
+    const std::uint8_t* right = pixel(r->screen, 72, 48);
+    EXPECT_EQ((std::vector<int>{left[0], left[1], left[2]}), (std::vector<int>{0, 255, 0}));
+    EXPECT_EQ((std::vector<int>{right[0], right[1], right[2]}), (std::vector<int>{0, 0, 255}));
+}
+
 TEST(GlmanCheck, NoiseIsMadeOnlyForProgramsThatDeclareIt) {
     auto plain = runPipeline(script("quad_texture"), true, true);
     ASSERT_TRUE(plain->prepared) << plain->printed();
