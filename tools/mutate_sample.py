@@ -104,6 +104,8 @@ EQUIVALENT = {
     "src/plan/plan.h:77:e647a978": "Wrap's Repeat and Clamp swap numbers, and no code reads one as a number: each is "
                                    "named where set, compared and turned into GL's (glWrap's switch); the one `Wrap w{}` "
                                    "is overwritten by parseTextureWrap or dropped with its error",
+    "src/gl/watch_gpu.cpp:320:b7999d5f": "a `continue;` added as the last statement of the sums' loop body: it goes "
+                                         "where the body's end goes, to the next i",
 }
 JOURNAL = ".sample-journal.json"
 
