@@ -106,6 +106,11 @@ EQUIVALENT = {
                                    "is overwritten by parseTextureWrap or dropped with its error",
     "src/gl/watch_gpu.cpp:320:b7999d5f": "a `continue;` added as the last statement of the sums' loop body: it goes "
                                          "where the body's end goes, to the next i",
+    "src/process/batch.cpp:123:3e399787": "the worker count's floor 1 made -1: it differs only for --jobs below 1, which "
+                                          "batch's CLI refuses (Range 1..64), grading passes 1 or batch's value, and "
+                                          "a batch of no jobs runs no loop with 0 workers or 1",
+    "src/gl/watch_gpu.cpp:371:526b0e5f": "a watch read-back rectangle's width floor 1 made 0: its callers ask for the "
+                                         "whole picture (w -1) or one pixel (1 x 1, the probe), never a width of 0",
 }
 JOURNAL = ".sample-journal.json"
 
