@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <set>
 #include <thread>
 
 #include <gtest/gtest.h>
@@ -245,6 +246,54 @@ TEST(CliChildren, BatchWorkersDieWithTheirParent) {
     std::string script = writeRunawayScript(dir);
     expectChildrenDieWithTheParent({"batch", script, "-o", out.path().string(), "--size", "64x64", "--backend",
                                     "osmesa", "--jobs", "1"}, SIGKILL);
+}
+
+// Each batch worker holds its own two pipes and no other worker's: a child
+// forked while others run closes the pipe ends it inherits from the parent.
+// Otherwise a worker let go (its job pipe closed) would not see the pipe's
+// end while a later worker lives, and one student's worker would hold the
+// pipes that carry another's jobs and results. Seen from /proc, as an
+// administrator would: the pipes each worker has open.
+std::set<std::string> pipesOpenIn(pid_t pid) {
+    std::set<std::string> pipes;
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator("/proc/" + std::to_string(pid) + "/fd", ec)) {
+        std::string target = fs::read_symlink(e.path(), ec).string();
+        if (!ec && target.rfind("pipe:", 0) == 0) pipes.insert(target);
+    }
+    return pipes;
+}
+
+TEST(CliChildren, EachBatchWorkerHoldsOnlyItsOwnPipes) {
+    TempDir dir, out, logs;
+    const std::string script = writeRunawayScript(dir);
+    const std::string second = dir.file("slow2.glib");
+    fs::copy_file(script, second);
+    pid_t parent = startGlimmer({"batch", script, second, "-o", out.path().string(), "--size", "64x64", "--backend",
+                                 "osmesa", "--jobs", "2", "--timeout", "600"}, logs.path().string());
+    std::vector<pid_t> kids;
+    for (int i = 0; i < 300 && kids.size() < 2; ++i) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        kids = childrenOf(parent);
+    }
+    std::vector<std::set<std::string>> held;
+    for (pid_t kid : kids) held.push_back(pipesOpenIn(kid));
+    std::set<std::string> parents = pipesOpenIn(parent);
+    for (const auto& p : pipesOpenIn(::getpid())) parents.erase(p);  // inherited from this test's own caller
+    ::kill(parent, SIGKILL);
+    int status = 0;
+    ::waitpid(parent, &status, 0);
+    for (pid_t kid : kids) EXPECT_TRUE(waitUntilGone(kid, 10));
+    ASSERT_EQ(kids.size(), 2u) << "two workers were not started: " << readAll(logs.file("stderr"));
+    for (size_t k = 0; k < 2; ++k) {
+        // Its own: the pipes it shares with the parent, its job pipe and its result pipe.
+        std::set<std::string> own;
+        for (const auto& p : held[k])
+            if (parents.count(p)) own.insert(p);
+        EXPECT_EQ(own.size(), 2u) << "worker " << k;
+        for (const auto& p : own)
+            EXPECT_EQ(held[1 - k].count(p), 0u) << "worker " << 1 - k << " holds " << p << ", a pipe of worker " << k;
+    }
 }
 
 // ---- two batches into one folder
