@@ -111,6 +111,10 @@ EQUIVALENT = {
                                           "a batch of no jobs runs no loop with 0 workers or 1",
     "src/gl/watch_gpu.cpp:371:526b0e5f": "a watch read-back rectangle's width floor 1 made 0: its callers ask for the "
                                          "whole picture (w -1) or one pixel (1 x 1, the probe), never a width of 0",
+    "src/grade/grading.h:52:5b80faa7": "Comparison's worstTile default 1 made 2: a measured comparison sets 1 first "
+                                       "(grading.cpp), so the default stays only on pictures that cannot be compared "
+                                       "(SSIM 0, PSNR 0), where 1 and 2 are alike above the fixed tile threshold 0.90 "
+                                       "and above any measured tile they are the minimum with",
 }
 JOURNAL = ".sample-journal.json"
 
