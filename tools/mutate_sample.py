@@ -115,6 +115,9 @@ EQUIVALENT = {
                                        "(grading.cpp), so the default stays only on pictures that cannot be compared "
                                        "(SSIM 0, PSNR 0), where 1 and 2 are alike above the fixed tile threshold 0.90 "
                                        "and above any measured tile they are the minimum with",
+    "src/shader/glsl_scan.cpp:64:58be7657": "lineOf's `end == npos ? npos : end - at` made `end > npos ? ...`: for "
+                                            "end == npos the count npos - at is still past the text's end "
+                                            "(at <= size), and substr takes the rest either way",
 }
 JOURNAL = ".sample-journal.json"
 

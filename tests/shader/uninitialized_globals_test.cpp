@@ -49,5 +49,15 @@ TEST(UninitializedGlobals, AnIndexedElementIsSetPastCommentsAndDirectives) {
     EXPECT_EQ(globalSetByMainFirst(text, "g", 4), 6);
 }
 
+// A brace at file scope with no parenthesis before it (a struct, an
+// interface block) is no function, also when it is the last thing in the
+// shader and no parenthesis follows it: the answer is the same as without it.
+TEST(UninitializedGlobals, AStructAfterMainIsNoFunction) {
+    const std::string text = "float g;\nfloat f() { return g; }\nvoid main() {\n    g = 1.;\n"
+                             "    gl_FragColor = vec4(f());\n}\nstruct Late { float a; };\n";
+    EXPECT_EQ(globalSetByMainFirst(text, "g", 2), 4);
+    EXPECT_EQ(globalSetByMainFirst(text + "uniform Block { vec4 b; };\n", "g", 2), 4);
+}
+
 }  // namespace
 }  // namespace glimmer
