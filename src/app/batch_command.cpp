@@ -52,9 +52,7 @@ void addBatchCommand(CLI::App& app, BatchOptions& o) {
     sub->add_option("--jobs", o.jobs, "worker processes")->capture_default_str()->check(CLI::Range(1, 64));
     sub->add_option("--shard", o.shard, "I/N: render only positions I, I+N, ... of the list (for a job array)");
     sub->add_option("--size", o.size, "output size WxH (default: each script's WindowSize, else 600x600)");
-    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device, egl-surfaceless or egl-gles (OpenGL ES 3.0: WebGL 2's level)")
-        ->capture_default_str()
-        ->check(CLI::IsMember({"auto", "osmesa", "egl", "egl-device", "egl-surfaceless", "egl-gles"}));
+    addBackendOption(sub, o.backend)->capture_default_str();
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
     sub->add_flag("--strict", o.strict, "a target holding NaN, Inf, negatives or values above 65504 fails the script");
     addSafetyOptions(sub, o);

@@ -8,6 +8,11 @@
 
 namespace glimmer {
 
+CLI::Option* addBackendOption(CLI::App* sub, std::string& backend) {
+    return sub->add_option("--backend", backend, "auto, osmesa, egl, egl-device, egl-surfaceless or egl-gles (OpenGL ES 3.0: WebGL 2's level)")
+        ->check(CLI::IsMember({"auto", "osmesa", "egl", "egl-device", "egl-surfaceless", "egl-gles"}));
+}
+
 namespace {
 
 // An option given with an empty value ("--watch ''") is a mistake, not the
@@ -19,8 +24,7 @@ const CLI::Validator kNotEmpty(
 void addCommon(CLI::App* sub, CommonOptions& o) {
     sub->add_option("script", o.script, "the .glib script ('-': read it from standard input; the files it names "
                                         "resolve against the current folder)")->required();
-    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device, egl-surfaceless or egl-gles (OpenGL ES 3.0: WebGL 2's level)")
-        ->check(CLI::IsMember({"auto", "osmesa", "egl", "egl-device", "egl-surfaceless", "egl-gles"}));
+    addBackendOption(sub, o.backend);
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
     sub->add_option("--set", o.sets, "NAME=VALUE for a range, checkbox, colour (R,G,B[,A]) or vector (X,Y,...) (repeatable)");
     sub->add_option("--size", o.size, "output size WxH (default: WindowSize, else 600x600)");

@@ -23,7 +23,7 @@ void addSheetCommand(CLI::App& app, SheetOptions& o) {
     sub->add_option("-o,--output", o.output, "the PNG to write");
     sub->add_option("--size", o.size, "size of each cell WxH (default 256x256)");
     sub->add_option("--set", o.sets, "NAME=VALUE for the uniforms that do not vary: a number, true/false, R,G,B[,A] or X,Y,... (repeatable)");
-    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device, egl-surfaceless or egl-gles (OpenGL ES 3.0: WebGL 2's level)");
+    addBackendOption(sub, o.backend);
     sub->add_option("-I,--include", o.includeDirs, "another folder to find shaders and images in");
     addSafetyOptions(sub, o);
 }

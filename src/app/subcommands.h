@@ -10,6 +10,7 @@
 
 namespace CLI {
 class App;
+class Option;
 }
 
 namespace glimmer {
@@ -47,6 +48,10 @@ struct ServeOptions {
 };
 void addServeCommand(CLI::App& app, ServeOptions& options);
 int runServe(const ServeOptions& options);
+
+// --backend with its choices, checked as it is read: every subcommand that
+// makes a context refuses an unknown one with the same message (app/cli_options.cpp).
+CLI::Option* addBackendOption(CLI::App* sub, std::string& backend);
 
 // --sandbox and --max-memory (app/safety_options.cpp).
 void addSafetyOptions(CLI::App* sub, CommonOptions& options);

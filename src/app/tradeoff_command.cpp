@@ -45,9 +45,9 @@ void addTradeoffCommand(CLI::App& app, TradeoffOptions& o) {
                                       "project's grid pattern, generated at --size)");
     sub->add_option("--size", o.size, "size of the generated input WxH (default 512x512)");
     sub->add_option("--format", o.format, "target format: RGBA8, RGBA16F (default), RGBA32F, R11F_G11F_B10F");
-    sub->add_option("--repeat", o.repeat, "timed runs per method after one warm-up (default 5)");
+    sub->add_option("--repeat", o.repeat, "timed runs per method after one warm-up (default 5)")->check(CLI::Range(1, 100000));
     sub->add_option("--methods", o.methods, "only methods whose name contains one of these words");
-    sub->add_option("--backend", o.backend, "auto, osmesa, egl, egl-device, egl-surfaceless or egl-gles (OpenGL ES 3.0: WebGL 2's level)");
+    addBackendOption(sub, o.backend);
     sub->add_option("--match-sigma", o.matchSigma,
                     "compare at one blur width: each family (superblur, sep9, linear5, dual Kawase) scaled to the "
                     "parameter whose sigma comes nearest S (0.5 to 16); the sigma column says how near (default: "
@@ -63,7 +63,7 @@ int runTradeoff(const TradeoffOptions& o) {
         return kExitUsage;
     }
     BackendChoice backend;
-    if (!parseBackend(o.backend, backend) || o.repeat < 1) {
+    if (!parseBackend(o.backend, backend) || o.repeat < 1) {  // refused as read (addBackendOption, Range)
         std::cerr << "glimmer: error: --backend or --repeat is not valid\n";
         return kExitUsage;
     }

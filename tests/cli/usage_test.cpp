@@ -75,6 +75,29 @@ TEST(CliUsage, UnknownBackend) {
     EXPECT_FALSE(fs::exists(dir.file("x.png")));
 }
 
+// Every subcommand that makes a context refuses an unknown backend as it
+// reads it, with one message (sheet said "unknown backend" only after
+// loading the script; tradeoff, "--backend or --repeat is not valid").
+TEST(CliUsage, UnknownBackendIsTheSameUsageErrorForEverySubcommand) {
+    TempDir dir;
+    const std::vector<std::vector<std::string>> commands{
+        {"check", "scripts/bloom.glib"},
+        {"sheet", "scripts/bloom.glib", "--vary", "uAdd=0,1", "-o", dir.file("s.png")},
+        {"batch", "scripts/bloom.glib", "-o", dir.file("b")},
+        {"tradeoff", "--size", "32x32", "-o", dir.file("t")}};
+    for (auto args : commands) {
+        args.insert(args.end(), {"--backend", "nope"});
+        auto r = runGlimmer(args);
+        EXPECT_EQ(r.exitCode, 2) << args[0] << ": " << r.err;
+        EXPECT_EQ(r.err, "--backend: nope not in {auto,osmesa,egl,egl-device,egl-surfaceless,egl-gles}\n"
+                         "Run with --help for more information.\n") << args[0];
+    }
+    EXPECT_TRUE(fs::is_empty(dir.path()));
+    auto r = runGlimmer({"tradeoff", "--size", "32x32", "--repeat", "0", "-o", dir.file("t")});
+    EXPECT_EQ(r.exitCode, 2) << r.err;
+    EXPECT_EQ(r.err, "--repeat: Value 0 not in range 1 to 100000\nRun with --help for more information.\n");
+}
+
 class CliBadPngLevel : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(CliBadPngLevel, IsAUsageError) {
