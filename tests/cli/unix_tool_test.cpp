@@ -60,7 +60,7 @@ TEST(CliUnix, HelpStatesTheShortcutAndEveryDefault) {
     EXPECT_NE(sheet.out.find("-o,--output TEXT=sheet.png"), std::string::npos) << sheet.out;
     EXPECT_NE(sheet.out.find("(default 256x256)"), std::string::npos);
     auto tradeoff = runGlimmer({"help", "tradeoff"});
-    EXPECT_NE(tradeoff.out.find("--repeat INT=5"), std::string::npos) << tradeoff.out;
+    EXPECT_NE(tradeoff.out.find("--repeat INT:INT in [1 - 100000]=5"), std::string::npos) << tradeoff.out;
     EXPECT_NE(tradeoff.out.find("-o,--output TEXT=tradeoff"), std::string::npos);
 }
 
