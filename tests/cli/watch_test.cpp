@@ -273,6 +273,36 @@ TEST(CliWatch, ScopeLineAndTypeErrorsAreExact) {
                                  "example bloom.frag:12:rgbblur)\n"), 1) << usage.err;
 }
 
+// render draws only the passes whose pictures reach the screen, and builds
+// only their programs: a watch in a pass nothing reads is refused with the
+// program named, not a crash (issue 40: a sampled mutant read the missing
+// program's first shader past the end of an empty list).
+TEST(CliWatch, AProgramWhosePictureNothingReadsIsRefusedAsNotBuilt) {
+    TempDir dir;
+    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "glman" / "pass.vert", dir.path() / "pass.vert");
+    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "glman" / "pass.vert", dir.path() / "unread.vert");
+    writeFile(dir, "unread.frag", "#version 330 compatibility\nin vec2 vST;\nvoid main() {\n"
+                                  "    float r = vST.s;\n    gl_FragColor = vec4(r, 0., 0., 1.);\n}\n");
+    writeFile(dir, "shown.frag", "#version 330 compatibility\nin vec2 vST;\n"
+                                 "void main() { gl_FragColor = vec4(0., vST.t, 0., 1.); }\n");
+    const std::string script = writeFile(dir, "unread.glib",
+                                         "WindowSize 32 32\nOrtho -1 1 -1 1\nTexture2D 5 32 32\nRenderToTexture 5\n"
+                                         "Vertex unread.vert\nFragment unread.frag\nProgram Unread\nQuadXY 0 1\n"
+                                         "RenderToTexture\nVertex pass.vert\nFragment shown.frag\nProgram Shown\n"
+                                         "QuadXY 0 1\n");
+    for (const char* watch : {"unread.vert:7:vST", "unread.frag:4:r"}) {  // its first stage and its second
+        RunResult r = runGlimmer({"render", script, "--backend", "osmesa", "--watch", watch, "-o", dir.file("w.png")});
+        EXPECT_EQ(r.exitCode, 1) << watch << ": " << r.err;
+        EXPECT_EQ(r.err, script + ":7:1: error: --watch: Program Unread was not built, so nothing can be watched in "
+                                  "it\nProgram Unread\n^\n1 error, 0 warnings\n") << watch;
+        EXPECT_FALSE(fs::exists(dir.file("w.png")));
+    }
+    // The shown pass's shader is watched as usual.
+    RunResult ok = runGlimmer({"render", script, "--backend", "osmesa", "--watch", "shown.frag:3:vST.t", "-o",
+                               dir.file("w.png")});
+    EXPECT_EQ(ok.exitCode, 0) << ok.err;
+}
+
 // A range whose numbers do not read as finite doubles is refused, whole: a
 // bound beyond a double's range (1e999) must not fall back to the value the
 // range held before (issue 40: the number's parse error accepted, a sampled
