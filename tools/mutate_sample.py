@@ -122,6 +122,9 @@ EQUIVALENT = {
                                            "a session reads --backend through addBackendOption, which refuses an "
                                            "unknown name before (sheet did not: fixed with this finding, "
                                            "CliUsage.UnknownBackendIsTheSameUsageErrorForEverySubcommand)",
+    "src/gl/uniform_upload.cpp:202:ed69357c": "a matrix array's loop bound max(size, 1) made max(size, 0): an "
+                                              "ActiveUniform's size comes only from glGetActiveUniform, 1 or more "
+                                              "for an active uniform (its default, 1, when the call fails)",
 }
 JOURNAL = ".sample-journal.json"
 
