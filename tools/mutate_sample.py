@@ -572,11 +572,12 @@ def main(args):
 
     commands = compile_commands(build)
     trial = Trial(snap, source, build, logs, base, baseline_dir, commands, args)
-    out = open(RESULTS, "a", encoding="utf-8")
-
     def record(row):
-        out.write(json.dumps(row) + "\n")
-        out.flush()
+        # Opened for each row, not held: a git command that rewrites the
+        # file while the walk runs (a stash, a checkout) would leave a held
+        # handle writing into the replaced, unlinked copy, and the rows lost.
+        with open(RESULTS, "a", encoding="utf-8") as out:
+            out.write(json.dumps(row) + "\n")
         results[row["id"]] = row
 
     if args.sample_recheck:
