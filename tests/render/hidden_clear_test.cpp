@@ -3,10 +3,13 @@
 // fragment shader that discards keeps the Clear, so the background shows
 // where it discards.
 #include <fstream>
+#include <string_view>
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <gtest/gtest.h>
 
 #include "common/test_folder.h"
+#include "gl/gl_api.h"
 #include "render_harness.h"
 
 using namespace glimmer;
@@ -48,6 +51,70 @@ TEST(HiddenClear, ACoveringQuadThatDiscardsNothingLeavesNoBackground) {
     ASSERT_TRUE(r.ok) << r.error;
     for (int y = 0; y < 32; ++y)
         for (int x = 0; x < 32; ++x) ASSERT_EQ(greenAt(r.screen, x, y), 255) << x << "," << y;
+}
+
+// The glClear calls the renderer issues, counted at its GL table (the
+// function it is handed for "glClear" counts, then calls the driver's).
+decltype(&::glClear) driverClear = nullptr;
+int clearsIssued = 0;
+void GLAPIENTRY countedClear(GLbitfield mask) {
+    ++clearsIssued;
+    driverClear(mask);
+}
+
+// A hidden Clear costs a full write of the screen for nothing (the seed's
+// screen pass took twice as long on the H100, plan/hidden_clears.h), so it
+// is not issued at all; once the viewer turns or zooms the scene the plan's
+// coverage no longer holds, and it is issued (the background shows where
+// the turned quad leaves the screen).
+TEST(HiddenClear, AHiddenClearIsNotIssuedUntilTheViewerMovesTheScene) {
+    TestFolder dir("glimmer_hidden_clear_");
+    std::ofstream(dir.path / "q.vert") << "#version 330 compatibility\n"
+                                          "void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n";
+    std::ofstream(dir.path / "q.frag") << "#version 330 compatibility\nvoid main() { gl_FragColor = vec4(0., 1., 0., 1.); }\n";
+    std::ofstream(dir.path / "s.glib") << "Ortho -1 1 -1 1\nBackground 1 0 0\nClear\nVertex q.vert\nFragment q.frag\n"
+                                          "Program Q\nQuadXY 0 2\n";
+    PlanOptions options;
+    options.width = options.height = 32;
+    Diagnostics diags;
+    LoadedScript loaded;
+    ASSERT_TRUE(loadScript((dir.path / "s.glib").string(), options, diags, loaded));
+    BackendChoice choice;
+    ASSERT_TRUE(parseBackend(testBackends().front(), choice));
+    std::string why;
+    auto context = createContext(choice, why);
+    ASSERT_TRUE(context) << why;
+    auto renderer = Renderer::create(
+        [&](const char* name) -> void* {
+            void* f = context->getProcAddress(name);
+            if (std::string_view(name) != "glClear" || !f) return f;
+            driverClear = reinterpret_cast<decltype(&::glClear)>(f);
+            return reinterpret_cast<void*>(&countedClear);
+        },
+        why);
+    ASSERT_TRUE(renderer && loadAndUpload(*renderer, loaded, false, diags)) << why;
+    const UniformValues values(loaded.plan);
+
+    clearsIssued = 0;
+    renderer->render(values, 0.0);
+    const int still = clearsIssued;
+    const Image plain = renderer->readScreen();
+    EXPECT_EQ(greenAt(plain, 0, 0), 255);
+    EXPECT_EQ(redAt(plain, 0, 0), 0);
+
+    renderer->setSceneTransform(glm::scale(glm::mat4(1.f), glm::vec3(.25f)));  // zoomed out
+    clearsIssued = 0;
+    renderer->render(values, 0.0);
+    EXPECT_EQ(clearsIssued, still + 1) << "zoomed: the screen's Clear issued, and only it";
+    const Image zoomed = renderer->readScreen();
+    EXPECT_EQ(redAt(zoomed, 0, 0), 255);  // a corner the smaller quad leaves
+    EXPECT_EQ(greenAt(zoomed, 16, 16), 255);
+
+    renderer->setSceneTransform(glm::mat4(1.f));
+    clearsIssued = 0;
+    renderer->render(values, 0.0);
+    EXPECT_EQ(clearsIssued, still) << "back to the script's view: hidden again";
+    renderer.reset();  // before its context
 }
 
 }  // namespace
