@@ -125,6 +125,10 @@ EQUIVALENT = {
     "src/gl/uniform_upload.cpp:202:ed69357c": "a matrix array's loop bound max(size, 1) made max(size, 0): an "
                                               "ActiveUniform's size comes only from glGetActiveUniform, 1 or more "
                                               "for an active uniform (its default, 1, when the call fails)",
+    "src/process/batch.cpp:256:3b65d5e7": "the payload read even when the header check failed: our worker writes "
+                                          "each 16-byte header whole (under PIPE_BUF, atomic), so a failed check is "
+                                          "a dead worker's EOF, where the header reads as zeros: a 0-byte payload, "
+                                          "then kind 0 fails the Result check, the crash path either way",
 }
 JOURNAL = ".sample-journal.json"
 
