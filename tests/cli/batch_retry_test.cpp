@@ -6,11 +6,16 @@
 // hook GLIMMER_TEST_FAULT (process/batch_worker.cpp).
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+
+#include <chrono>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -129,6 +134,59 @@ TEST(CliBatchRetry, AWorkerStuckBeforeItsContextIsReplacedAndTheBatchEnds) {
                   "context: `ps -eo pid,stat,wchan,args` shows it in state D\n"
                   "glimmer: note: the same when drawn again, alone on the machine in a fresh worker\n") << lines[k].dump();
     EXPECT_EQ(pngOf(dir.path() / "always", "_a"), "");
+}
+
+// A worker that dies while drawing (killed here, as the kernel's OOM killer
+// or a driver crash would) loses only its job: that job is drawn again,
+// alone, in a fresh worker, and only that second outcome counts (here the
+// fresh worker dies too, so the job says the renderer crashed); the other
+// script is drawn as if nothing happened, by yet another worker.
+TEST(CliBatchRetry, AWorkerThatDiesWhileDrawingLosesOnlyItsJob) {
+    TempDir dir, out, logs;
+    const std::string runaway = glimmer_cli::writeRunawayScript(dir), solid = writeSolid(dir, "b.glib", 1);
+    const pid_t parent = glimmer_cli::startGlimmer({"batch", runaway, solid, "-o", out.path().string(), "--report",
+                                                    dir.file("r.jsonl"), "--size", "32x32", "--backend", "osmesa",
+                                                    "--jobs", "1", "--timeout", "120"},
+                                                   logs.path().string());
+    // The worker drawing the runaway script, then the fresh one drawing it again.
+    pid_t killed = 0;
+    for (int round = 0; round < 2; ++round) {
+        pid_t worker = 0;
+        for (int i = 0; i < 400 && !worker; ++i) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            for (pid_t kid : glimmer_cli::childrenOf(parent))
+                if (kid != killed) worker = kid;
+        }
+        ASSERT_NE(worker, 0) << "round " << round << ": no worker; " << readAll(logs.file("stderr"));
+        std::this_thread::sleep_for(std::chrono::milliseconds(500));  // drawing by now, or still preparing
+        ::kill(worker, SIGKILL);
+        killed = worker;
+    }
+    int status = 0;
+    bool ended = false;
+    for (int i = 0; i < 1200 && !ended; ++i) {  // up to a minute for the other script
+        ended = ::waitpid(parent, &status, WNOHANG) == parent;
+        if (!ended) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    if (!ended) {
+        ::kill(parent, SIGKILL);
+        ::waitpid(parent, &status, 0);
+    }
+    ASSERT_TRUE(ended) << "the batch did not end: " << readAll(logs.file("stderr"));
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1) << status << " " << readAll(logs.file("stderr"));
+    auto lines = report(dir.path() / "r.jsonl");
+    ASSERT_EQ(lines.size(), 2u) << readAll(dir.path() / "r.jsonl");
+    const std::string said = lines[0].value("diagnostics", "");
+    EXPECT_EQ(said.rfind(runaway + ": error: the renderer crashed while ", 0), 0u) << said;
+    const std::string again = "glimmer: note: the same when drawn again, alone on the machine in a fresh worker\n";
+    EXPECT_TRUE(said.size() > again.size() && said.compare(said.size() - again.size(), again.size(), again) == 0) << said;
+    EXPECT_EQ(countOf(said, "\n"), 2) << said;  // the error and the note, once each
+    EXPECT_EQ(lines[1].value("diagnostics", "?"), "") << lines[1].dump();
+    EXPECT_EQ(lines[1].value("exit", -1), 0) << lines[1].dump();
+    EXPECT_EQ(pngOf(out.path(), "_slow"), "");
+    auto ref = runGlimmer({"-q", "render", solid, "-o", dir.file("b.png"), "--size", "32x32", "--backend", "osmesa"});
+    ASSERT_EQ(ref.exitCode, 0) << ref.err;
+    EXPECT_EQ(readAll(pngOf(out.path(), "_b")), readAll(dir.path() / "b.png"));
 }
 
 // Grading: a correct submission whose first drawing read back as zeros (an
