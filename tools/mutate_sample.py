@@ -129,6 +129,9 @@ EQUIVALENT = {
                                           "each 16-byte header whole (under PIPE_BUF, atomic), so a failed check is "
                                           "a dead worker's EOF, where the header reads as zeros: a 0-byte payload, "
                                           "then kind 0 fails the Result check, the crash path either way",
+    "src/grade/grading.cpp:91:6e933dfc": "comparable(solution, student) for (student, solution): sizes and types are "
+                                         "compared both ways alike; only 'not empty' moves to the solution, and an empty "
+                                         "picture of either side is 0x0 while the other is not, or both are empty: false",
 }
 JOURNAL = ".sample-journal.json"
 
