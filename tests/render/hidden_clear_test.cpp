@@ -18,9 +18,8 @@ using namespace glimmer::testing;
 namespace {
 
 // Red background; a screen-filling quad drawing green, discarding the left
-// half when `discardLeft`.
-Rendered halfDiscarded(bool discardLeft) {
-    TestFolder dir("glimmer_hidden_clear_");
+// half when `discardLeft`: the script s.glib in `dir`.
+void writeCoveredClear(const TestFolder& dir, bool discardLeft) {
     std::ofstream(dir.path / "q.vert") << "#version 330 compatibility\nout vec2 vST;\n"
                                           "void main() { vST = gl_MultiTexCoord0.st;\n"
                                           "  gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n";
@@ -29,6 +28,11 @@ Rendered halfDiscarded(bool discardLeft) {
                                        << "  gl_FragColor = vec4(0., 1., 0., 1.); }\n";
     std::ofstream(dir.path / "s.glib") << "Ortho -1 1 -1 1\nBackground 1 0 0\nClear\nVertex q.vert\nFragment q.frag\n"
                                           "Program Q\nQuadXY 0 2\n";
+}
+
+Rendered halfDiscarded(bool discardLeft) {
+    TestFolder dir("glimmer_hidden_clear_");
+    writeCoveredClear(dir, discardLeft);
     PlanOptions options;
     options.width = options.height = 32;
     return renderScript(testBackends().front(), (dir.path / "s.glib").string(), {}, {}, options);
@@ -69,11 +73,7 @@ void GLAPIENTRY countedClear(GLbitfield mask) {
 // the turned quad leaves the screen).
 TEST(HiddenClear, AHiddenClearIsNotIssuedUntilTheViewerMovesTheScene) {
     TestFolder dir("glimmer_hidden_clear_");
-    std::ofstream(dir.path / "q.vert") << "#version 330 compatibility\n"
-                                          "void main() { gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n";
-    std::ofstream(dir.path / "q.frag") << "#version 330 compatibility\nvoid main() { gl_FragColor = vec4(0., 1., 0., 1.); }\n";
-    std::ofstream(dir.path / "s.glib") << "Ortho -1 1 -1 1\nBackground 1 0 0\nClear\nVertex q.vert\nFragment q.frag\n"
-                                          "Program Q\nQuadXY 0 2\n";
+    writeCoveredClear(dir, false);
     PlanOptions options;
     options.width = options.height = 32;
     Diagnostics diags;
