@@ -276,10 +276,34 @@ TEST(CliChildren, EachBatchWorkerHoldsOnlyItsOwnPipes) {
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
         kids = childrenOf(parent);
     }
+    // A worker closes the ends it inherits just after it is forked: looked
+    // at in that moment it still holds them (seen in CI under load). So the
+    // pipes are read again until each worker holds two of the parent's and
+    // none of the other's, or ten seconds have passed; a worker that never
+    // closes them is still seen.
     std::vector<std::set<std::string>> held;
-    for (pid_t kid : kids) held.push_back(pipesOpenIn(kid));
-    std::set<std::string> parents = pipesOpenIn(parent);
-    for (const auto& p : pipesOpenIn(::getpid())) parents.erase(p);  // inherited from this test's own caller
+    std::set<std::string> parents;
+    auto settled = [&] {
+        if (held.size() != 2) return false;
+        for (size_t k = 0; k < 2; ++k) {
+            size_t own = 0;
+            for (const auto& p : held[k])
+                if (parents.count(p)) {
+                    ++own;
+                    if (held[1 - k].count(p)) return false;
+                }
+            if (own != 2) return false;
+        }
+        return true;
+    };
+    for (int i = 0; i < 200; ++i) {
+        held.clear();
+        for (pid_t kid : kids) held.push_back(pipesOpenIn(kid));
+        parents = pipesOpenIn(parent);
+        for (const auto& p : pipesOpenIn(::getpid())) parents.erase(p);  // inherited from this test's own caller
+        if (settled()) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
     ::kill(parent, SIGKILL);
     int status = 0;
     ::waitpid(parent, &status, 0);
