@@ -132,6 +132,9 @@ EQUIVALENT = {
     "src/grade/grading.cpp:91:6e933dfc": "comparable(solution, student) for (student, solution): sizes and types are "
                                          "compared both ways alike; only 'not empty' moves to the solution, and an empty "
                                          "picture of either side is 0x0 while the other is not, or both are empty: false",
+    "src/grade/grade_report.cpp:14:ad95e50a": "the review order's error rank 0 made -1: it only sorts, and every verdict "
+                                              "is one of the four (grading makes no other, a read row with another is "
+                                              "refused), so errors still come first and 0 for an unknown is never used",
 }
 JOURNAL = ".sample-journal.json"
 

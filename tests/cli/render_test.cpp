@@ -203,4 +203,13 @@ TEST(CliHealth, WithoutStrictTheReportIsOnlyInformation) {
     EXPECT_NE(r.err.find("health: screen (RGBA8 600x600)"), std::string::npos) << r.err;
 }
 
+// The report names the screen as a user gives --size: width, then height.
+TEST(CliHealth, TheScreenIsNamedWidthByHeight) {
+    TempDir dir;
+    auto r = runGlimmer({"render", cliData("nan.glib"), "--backend", "osmesa", "--health", "--size", "96x48", "-o",
+                         dir.file("o.png")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_NE(r.err.find("health: screen (RGBA8 96x48)"), std::string::npos) << r.err;
+}
+
 }  // namespace
