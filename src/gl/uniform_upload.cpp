@@ -144,6 +144,8 @@ std::string uniformTypeName(GLenum type) {
     }
 }
 
+bool glibFormSets(GLenum type) { return !isSamplerType(type) && typeInfo(type).base != Base::Other; }
+
 void checkUniformSettings(const ProgramDecl& decl, const std::vector<ActiveUniform>& active,
                           const std::string& scriptFile, Diagnostics& diags) {
     for (const auto& s : decl.uniforms) {

@@ -43,6 +43,12 @@ std::vector<double> convertUniform(UniformSetting::Form form, const ActiveUnifor
 
 bool isSamplerType(GLenum type);
 
+// Whether a value on a Program line (a range, an array, a colour, a bool)
+// can set a uniform of this type: floats, ints, bools, their vectors and
+// float matrices. Not unsigned ints, doubles and the rest (checkUniformSettings
+// warns "it is not set"); not samplers, which a unit number sets.
+bool glibFormSets(GLenum type);
+
 // A uniform's type as GLSL spells it ("float", "vec3", "mat4", "uvec2");
 // "sampler" for any sampler, "another type" for the rest.
 std::string uniformTypeName(GLenum type);

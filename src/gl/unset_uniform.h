@@ -11,6 +11,7 @@ struct UnsetUniform {
     std::string type;     // its GLSL type: "float", "int", "bool", "vec3", ...
     int size = 1;         // array length
     std::string example;  // what would set it on the Program line, "uKa <0. 1. 1.>"; "" for none
+    bool settable = true;  // some GLIB form on the Program line sets its type (none sets uint, uvec2-4, double)
 };
 
 }  // namespace glimmer

@@ -37,7 +37,7 @@ std::vector<UnsetUniform> unsetUniforms(const ProgramDecl& decl, const std::vect
         for (const auto& s : decl.uniforms) set = set || s.name == u.name;
         if (set) continue;
         std::string type = uniformTypeName(u.type);
-        out.push_back({u.name, type, int(u.size), u.size > 1 ? std::string() : example(u.name, type)});
+        out.push_back({u.name, type, int(u.size), u.size > 1 ? std::string() : example(u.name, type), glibFormSets(u.type)});
     }
     return out;
 }
@@ -54,13 +54,23 @@ void warnUnsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>
                 if (int line = uniformDeclarationLine(*texts[k], u.name); line > 0)
                     where = fmt::format(" ({}:{})", decl.stages[k].shown, line);
         std::string type = u.type + (u.size > 1 ? fmt::format("[{}]", u.size) : "");
-        const bool scalar = u.size == 1 && (type == "float" || type == "int");
+        const bool scalar = u.size == 1 && (type == "float" || type == "int" || type == "uint");
         std::string value = type == "bool" ? "false" : scalar ? "0" : "all 0";
         const std::string& add = u.example;
+        if (!u.settable) {
+            // No Program line can set it: the advice is the shader's.
+            const bool unsignedInt = u.type == "uint" || u.type.rfind("uvec", 0) == 0;
+            diags.warning(scriptFile, decl.loc,
+                          fmt::format("Program {} reads uniform {} {}{} but the script never sets it, so it stays {}; "
+                                      "no GLIB form sets a {}: give it a value where the shader declares it{}",
+                                      decl.name, type, u.name, where, value, u.type,
+                                      unsignedInt ? fmt::format(", or declare it {}", u.type == "uint" ? "int" : "i" + u.type.substr(1)) : ""));
+            continue;
+        }
         diags.warning(scriptFile, decl.loc,
                       fmt::format("Program {} reads uniform {} {}{} but the script never sets it, so it stays {}; "
                                   "give it a value{} on this Program line{}",
-                                  decl.name, type, u.name, where, value, scalar ? " or a slider" : "",
+                                  decl.name, type, u.name, where, value, scalar && type != "uint" ? " or a slider" : "",
                                   add.empty() || u.size > 1 ? std::string() : fmt::format(", e.g. '{}'", add)));
     }
 }

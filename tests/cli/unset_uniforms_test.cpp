@@ -69,5 +69,23 @@ TEST(CliUnsetUniforms, IntegerVectorsGetTheirBracketExample) {
         EXPECT_NE(r.err.find(want), std::string::npos) << want << "\n" << r.err;
 }
 
+// No Program line can set an unsigned int: the advice is the shader's, not
+// the script's (a range given to one is warned "it is not set").
+TEST(CliUnsetUniforms, AnUnsignedIntIsToldToBeSetInItsShader) {
+    TempDir dir;
+    auto r = checkOneProgram(dir, "Uns",
+                             "#version 330 compatibility\nuniform uint uN;\nuniform uvec3 uV;\n"
+                             "in vec2 vST;\nvoid main() { gl_FragColor = vec4(float(uN + uV.y), 0., 0., 1.); }\n");
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string script = dir.file("Uns.glib");
+    EXPECT_EQ(r.err,
+              script + ":3:1: warning: Program Uns reads uniform uint uN (Uns.frag:2) but the script never sets it, so "
+                       "it stays 0; no GLIB form sets a uint: give it a value where the shader declares it, or declare "
+                       "it int\nProgram Uns\n^\n" +
+                  script + ":3:1: warning: Program Uns reads uniform uvec3 uV (Uns.frag:3) but the script never sets "
+                           "it, so it stays all 0; no GLIB form sets a uvec3: give it a value where the shader declares "
+                           "it, or declare it ivec3\nProgram Uns\n^\n");
+}
+
 }  // namespace
 }  // namespace glimmer_cli
