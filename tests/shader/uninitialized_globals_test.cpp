@@ -36,6 +36,12 @@ TEST(UninitializedGlobals, TheTrueOnesStay) {
                                    "    if (gl_FragCoord.x > 1.) { g = 1.; }\n    gl_FragColor = vec4(f());\n}\n",
                                    "g", 2),
               0);
+    // Also when it is not the block's first statement: a statement inside the
+    // block is none of main's own.
+    EXPECT_EQ(globalSetByMainFirst("float g;\nfloat f() { return g; }\nvoid main() {\n"
+                                   "    if (gl_FragCoord.x > 1.) { float a = 2.; g = a; }\n    gl_FragColor = vec4(f());\n}\n",
+                                   "g", 2),
+              0);
     // A uniform is never "set by main".
     EXPECT_EQ(globalSetByMainFirst("uniform float g;\nfloat f() { return g; }\nvoid main() { g = 1.; f(); }\n", "g", 2),
               0);

@@ -3,9 +3,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <thread>
 
 #include <gtest/gtest.h>
 
@@ -162,6 +164,43 @@ TEST(Viewer, SavedPictureMatchesTheCpuReference) {
     ASSERT_EQ(saved.height, cal::kH);
     std::string where;
     EXPECT_LE(cal::maxStepsIn(saved, 0, 0, cal::expectedScreen(cal::input(dir), 3, 2.0), &where), 3) << where;
+}
+
+// `panel`'s picture= is a hash of the whole picture as shown, which a tour
+// reads to tell whether a click changed the picture: in a picture four
+// times as wide as tall, a change in its right quarter alone changes it,
+// and setting the value back gives the first hash again.
+TEST(Viewer, ThePanelsPictureHashCoversAllOfAWidePicture) {
+    glimmer::testing::TestFolder folder("glimmer_viewer_wide_");
+    const fs::path& dir = folder.path;
+    // The quad's texture coordinates made its corners: it fills the picture.
+    std::ofstream(dir / "fill.vert") << "#version 330 compatibility\n"
+                                        "void main() { gl_Position = vec4(gl_MultiTexCoord0.st * 2. - 1., 0., 1.); }\n";
+    std::ofstream(dir / "right.frag") << "#version 330 compatibility\nuniform float uR;\n"
+                                         "void main() { gl_FragColor = vec4(gl_FragCoord.x > 192. ? uR : 0., .2, 0., 1.); }\n";
+    std::ofstream(dir / "wide.glib") << "Vertex fill.vert\nFragment right.frag\nProgram Right uR <0. 0. 1.>\nQuadXY 0 1\n";
+    ViewerProcess v({"wide.glib", "--size", "256x64"}, dir);
+    ASSERT_TRUE(v.waitForLog("glimmer view: loaded")) << v.log();
+    int asked = 0;
+    // The hash `panel` gives is of the frame after the last `panel`: asked twice, a while apart.
+    auto picture = [&] {
+        for (int k = 0; k < 2; ++k) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(400));
+            v.send("panel");
+            if (!v.waitForLog("glimmer view: panel ", ++asked)) return std::string("(no answer)");
+        }
+        const std::string log = v.log();
+        const size_t at = log.rfind(" picture=");
+        return at == std::string::npos ? std::string("(none)") : log.substr(at + 9, 16);
+    };
+    const std::string dark = picture();
+    v.send("set uR 1");
+    const std::string red = picture();
+    EXPECT_NE(red, dark) << v.log();
+    EXPECT_EQ(picture(), red) << v.log();  // the same picture, the same hash
+    v.send("set uR 0");
+    EXPECT_EQ(picture(), dark) << v.log();
+    EXPECT_EQ(v.quit(), 0) << v.log();
 }
 
 }  // namespace
