@@ -135,6 +135,14 @@ EQUIVALENT = {
     "src/grade/grade_report.cpp:14:ad95e50a": "the review order's error rank 0 made -1: it only sorts, and every verdict "
                                               "is one of the four (grading makes no other, a read row with another is "
                                               "refused), so errors still come first and 0 for an unknown is never used",
+    "src/process/watchdog.cpp:107:ffbacd55": "the child's progress pipe marked closed on a read of 1 byte, not at its "
+                                             "end: records are written whole (under PIPE_BUF), so no read is 1 byte, "
+                                             "and the end comes only as the child exits (it holds the write end to "
+                                             "_exit, forks and execs nothing): the loop then polls until the reap, "
+                                             "the same output",
+    "src/process/child_guard.cpp:37:85e60e69": "a child whose parent died before prctl exits 255, not 1: its parent, "
+                                               "the one glimmer that could read the code, is gone; the process that "
+                                               "adopts it (init) reads no code",
 }
 JOURNAL = ".sample-journal.json"
 
