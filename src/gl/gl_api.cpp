@@ -25,7 +25,8 @@ bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error) {
     if (gl.GetIntegerv && gl.GetError) {
         GLint strategy = 0;
         gl.GetIntegerv(GL_RESET_NOTIFICATION_STRATEGY_ARB, &strategy);
-        while (gl.GetError() != GL_NO_ERROR) {
+        // Bounded: a lost context may report its error for ever (contextFailure).
+        for (int k = 0; k < 64 && gl.GetError() != GL_NO_ERROR; ++k) {
         }
         if (strategy == GL_LOSE_CONTEXT_ON_RESET_ARB)
             for (const char* name : {"glGetGraphicsResetStatus", "glGetGraphicsResetStatusARB", "glGetGraphicsResetStatusKHR",

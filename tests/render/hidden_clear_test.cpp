@@ -18,16 +18,17 @@ using namespace glimmer::testing;
 namespace {
 
 // Red background; a screen-filling quad drawing green, discarding the left
-// half when `discardLeft`: the script s.glib in `dir`.
-void writeCoveredClear(const TestFolder& dir, bool discardLeft) {
+// half when `discardLeft`: the script s.glib in `dir`. `scene`: the
+// script's lines before the Program, `quad` its QuadXY's arguments.
+void writeCoveredClear(const TestFolder& dir, bool discardLeft,
+                       const char* scene = "Ortho -1 1 -1 1\nBackground 1 0 0\nClear\n", const char* quad = "0 2") {
     std::ofstream(dir.path / "q.vert") << "#version 330 compatibility\nout vec2 vST;\n"
                                           "void main() { vST = gl_MultiTexCoord0.st;\n"
                                           "  gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n";
     std::ofstream(dir.path / "q.frag") << "#version 330 compatibility\nin vec2 vST;\nvoid main() {\n"
                                        << (discardLeft ? "  if (vST.s < .5) discard;\n" : "")
                                        << "  gl_FragColor = vec4(0., 1., 0., 1.); }\n";
-    std::ofstream(dir.path / "s.glib") << "Ortho -1 1 -1 1\nBackground 1 0 0\nClear\nVertex q.vert\nFragment q.frag\n"
-                                          "Program Q\nQuadXY 0 2\n";
+    std::ofstream(dir.path / "s.glib") << scene << "Vertex q.vert\nFragment q.frag\nProgram Q\nQuadXY " << quad << "\n";
 }
 
 Rendered halfDiscarded(bool discardLeft) {
@@ -48,6 +49,23 @@ TEST(HiddenClear, TheBackgroundShowsWhereTheCoveringQuadDiscards) {
     EXPECT_EQ(greenAt(r.screen, 4, 16), 0);
     EXPECT_EQ(redAt(r.screen, 28, 16), 0);     // right: the quad's green
     EXPECT_EQ(greenAt(r.screen, 28, 16), 255);
+}
+
+// The screen of a script that never clears it starts opaque black, so
+// what its quads leave reads back defined, as (0, 0, 0, 255), on every
+// backend (a new texture's bytes are the driver's to choose).
+TEST(HiddenClear, AScreenNoPassClearsIsOpaqueBlackWhereNothingIsDrawn) {
+    TestFolder dir("glimmer_unclear_");
+    writeCoveredClear(dir, false, "Ortho -1 1 -1 1\n", "0 .5");  // the middle, no Clear
+    PlanOptions options;
+    options.width = options.height = 32;
+    for (const auto& backend : testBackends()) {
+        Rendered r = renderScript(backend, (dir.path / "s.glib").string(), {}, {}, options);
+        ASSERT_TRUE(r.ok) << backend << ": " << r.error;
+        const std::uint8_t* corner = &r.screen.u8[0];
+        EXPECT_EQ(std::vector<int>(corner, corner + 4), (std::vector<int>{0, 0, 0, 255})) << backend;
+        EXPECT_EQ(greenAt(r.screen, 16, 16), 255) << backend;
+    }
 }
 
 TEST(HiddenClear, ACoveringQuadThatDiscardsNothingLeavesNoBackground) {
