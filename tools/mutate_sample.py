@@ -135,6 +135,8 @@ EQUIVALENT = {
     "src/grade/grade_report.cpp:14:ad95e50a": "the review order's error rank 0 made -1: it only sorts, and every verdict "
                                               "is one of the four (grading makes no other, a read row with another is "
                                               "refused), so errors still come first and 0 for an unknown is never used",
+    "src/grade/grade_report.cpp:209:0b0727d7": "a continue added as the last statement of a loop body: it goes "
+                                              "where the body's end goes",
     "src/process/watchdog.cpp:107:ffbacd55": "the child's progress pipe marked closed on a read of 1 byte, not at its "
                                              "end: records are written whole (under PIPE_BUF), so no read is 1 byte, "
                                              "and the end comes only as the child exits (it holds the write end to "
