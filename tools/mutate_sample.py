@@ -137,6 +137,8 @@ EQUIVALENT = {
                                               "refused), so errors still come first and 0 for an unknown is never used",
     "src/grade/grade_report.cpp:209:0b0727d7": "a continue added as the last statement of a loop body: it goes "
                                               "where the body's end goes",
+    "src/shader/watch_spec.cpp:53:d1e7868e": "d >= size made d == size: d starts at i + 1 <= size and stops at "
+                                             "size at most, so the two agree",
     "src/process/watchdog.cpp:107:ffbacd55": "the child's progress pipe marked closed on a read of 1 byte, not at its "
                                              "end: records are written whole (under PIPE_BUF), so no read is 1 byte, "
                                              "and the end comes only as the child exits (it holds the write end to "

@@ -32,6 +32,16 @@ TEST(Grading, SlidersGiveDefaultsThenEachEnd) {
     EXPECT_EQ(settingsFromSliders({{"uA", 0, 0.5, 1}, {"uB", 1, 2, 4}}, 3).size(), 3u);
 }
 
+// A solution with many sliders is graded at 16 settings, as docs/teaching.md
+// tells teachers: the defaults, then the first sliders' ends in order.
+TEST(Grading, ManySlidersGiveSixteenSettings) {
+    std::vector<Slider> sliders;
+    for (int k = 0; k < 10; ++k) sliders.push_back({"u" + std::to_string(k), 0, 0.5, 1});  // 21 settings possible
+    auto s = settingsFromSliders(sliders);
+    ASSERT_EQ(s.size(), 16u);
+    EXPECT_EQ(settingLabel(s[15]), "u7=0");
+}
+
 TEST(Grading, VaryGivesItsValues) {
     std::vector<Setting> s;
     std::string error;
