@@ -100,6 +100,28 @@ TEST(CliOutputs, AnOutputThatIsOneOfTheScriptsInputsIsRefused) {
     EXPECT_NE(r.err.find("that is 'plain.vert', which the script reads"), std::string::npos) << r.err;
 }
 
+// ---- the script's counts (docs/RELIABILITY.md's limits table)
+
+// Past 100,000 draws or 1000 RenderToTexture passes, one error at the line
+// that went past, not one for every line after it (a script of a million
+// draws would print a million errors).
+TEST(CliLimits, PastTheDrawsOrPassesOneErrorAtTheLineThatWentPast) {
+    TempDir dir;
+    std::string draws;
+    for (int i = 0; i < 100003; ++i) draws += "QuadXY 0 1\n";
+    auto s = writeFile(dir, "draws.glib", draws);
+    auto r = check(s, {});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.err, s + ":100001:1: error: more than 100000 draws; this one and those after it are not drawn\n"
+                         "QuadXY 0 1\n^\n1 error, 0 warnings\n");
+    std::string passes = "Texture2D 6 16 16\n";
+    for (int i = 0; i < 1003; ++i) passes += "RenderToTexture 6\nClear\n";
+    s = writeFile(dir, "passes.glib", passes);
+    r = check(s, {});
+    EXPECT_EQ(r.exitCode, 1);
+    EXPECT_EQ(r.err, s + ":2002:1: error: more than 1000 RenderToTexture passes\nRenderToTexture 6\n^\n1 error, 0 warnings\n");
+}
+
 // ---- memory the budget counts before it is taken
 
 TEST(CliMemoryBudget, ManyLargeShapesArePastTheBudget) {
