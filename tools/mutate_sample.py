@@ -139,6 +139,9 @@ EQUIVALENT = {
                                               "where the body's end goes",
     "src/shader/watch_spec.cpp:53:d1e7868e": "d >= size made d == size: d starts at i + 1 <= size and stops at "
                                              "size at most, so the two agree",
+    "src/gl/texel_rate.cpp:34:0631c6fc": "the texel-rate shader's step 1/size made -1/size: its taps mirrored, "
+                                         "the same count of bilinear fetches over the same spread, into a picture "
+                                         "nothing reads (only the time is kept): the same work measured",
     "src/process/watchdog.cpp:107:ffbacd55": "the child's progress pipe marked closed on a read of 1 byte, not at its "
                                              "end: records are written whole (under PIPE_BUF), so no read is 1 byte, "
                                              "and the end comes only as the child exits (it holds the write end to "
