@@ -68,6 +68,24 @@ TEST(HiddenClear, AScreenNoPassClearsIsOpaqueBlackWhereNothingIsDrawn) {
     }
 }
 
+// A quad as large as the view but moved up leaves the bottom half to the
+// Clear: the Clear is drawn and the background shows there, whichever side
+// of the quad the screen's corners are past.
+TEST(HiddenClear, AQuadMovedUpLeavesTheBottomToTheBackground) {
+    TestFolder dir("glimmer_moved_quad_");
+    writeCoveredClear(dir, false, "Ortho -1 1 -1 1\nBackground 1 0 0\nClear\nTranslate 0 1 0\n", "0 1");
+    PlanOptions options;
+    options.width = options.height = 32;
+    for (const auto& backend : testBackends()) {
+        Rendered r = renderScript(backend, (dir.path / "s.glib").string(), {}, {}, options);
+        ASSERT_TRUE(r.ok) << backend << ": " << r.error;
+        for (int x : {0, 16, 31}) {
+            EXPECT_EQ(redAt(r.screen, x, 28), 255) << backend << " bottom, x " << x;  // the Clear's red (rows from the top)
+            EXPECT_EQ(greenAt(r.screen, x, 4), 255) << backend << " top, x " << x;     // the quad's green
+        }
+    }
+}
+
 TEST(HiddenClear, ACoveringQuadThatDiscardsNothingLeavesNoBackground) {
     Rendered r = halfDiscarded(false);
     ASSERT_TRUE(r.ok) << r.error;
