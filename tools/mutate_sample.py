@@ -142,6 +142,9 @@ EQUIVALENT = {
     "src/gl/texel_rate.cpp:34:0631c6fc": "the texel-rate shader's step 1/size made -1/size: its taps mirrored, "
                                          "the same count of bilinear fetches over the same spread, into a picture "
                                          "nothing reads (only the time is kept): the same work measured",
+    "src/gl/renderer_prepare.cpp:53:e8f6be17": "prepare's errorCount() == errorsBefore made <=: the count only "
+                                               "grows while prepare runs (Diagnostics::clear is never called in it), "
+                                               "so it is never below",
     "src/process/watchdog.cpp:107:ffbacd55": "the child's progress pipe marked closed on a read of 1 byte, not at its "
                                              "end: records are written whole (under PIPE_BUF), so no read is 1 byte, "
                                              "and the end comes only as the child exits (it holds the write end to "

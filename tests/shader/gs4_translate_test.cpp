@@ -148,6 +148,17 @@ TEST(Gs4Translate, OldVersionIsRaisedTo150Compatibility) {
     }
 }
 
+// Only a #version line with its number is a version: a #line (or #if) with
+// a number is left as written, and a bare #version, which the driver will
+// refuse, is no version and no crash.
+TEST(Gs4Translate, OnlyAVersionLineWithANumberIsRaised) {
+    auto r = translateGs4("#line 5\n#extension GL_EXT_geometry_shader4 : enable\nvoid main() {}\n");
+    EXPECT_EQ(r.text, "#line 5\n\nvoid main() {}\n");
+    EXPECT_EQ(r.rewrites, std::vector<std::string>{"#extension GL_EXT_geometry_shader4 dropped"});
+    r = translateGs4("#version\n#extension GL_EXT_geometry_shader4 : enable\nvoid main() {}\n");
+    EXPECT_EQ(r.text, "#version\n\nvoid main() {}\n");
+}
+
 TEST(Gs4Translate, AStandardShaderIsUntouched) {
     const std::string in = "#version 330 compatibility\nlayout(triangles) in;\nlayout(points, max_vertices=1) out;\n"
                            "void main() { gl_Position = gl_in[0].gl_Position; EmitVertex(); }\n";
