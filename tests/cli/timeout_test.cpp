@@ -2,9 +2,13 @@
 // and a script that finishes in time is untouched by the watchdog.
 #include <gtest/gtest.h>
 
+#include <signal.h>
+#include <sys/wait.h>
+
 #include <chrono>
 #include <fstream>
 #include <string>
+#include <thread>
 
 #include "run_glimmer.h"
 
@@ -30,6 +34,35 @@ TEST(CliTimeout, ARunawayShaderIsStoppedAndItsPassNamed) {
                               "drawing\nRenderToTexture\n^\n") << r.err;
     std::ifstream written(dir.file("o.png"));
     EXPECT_FALSE(written.good()) << "a stopped render writes no picture";
+}
+
+// The passes the renderer announced after glimmer's last look are still in
+// the pipe when the time runs out: they are read before the message is
+// made. Shown by stopping glimmer (SIGSTOP) while its renderer announces
+// both passes and starts the runaway one, and letting it go on only after
+// its --timeout has passed: it names the runaway pass, not an earlier one
+// and not "while loading".
+TEST(CliTimeout, PassesAnnouncedWhileGlimmerWasNotLookingAreRead) {
+    TempDir dir, logs;
+    const std::string script = writeRunawayScript(dir);
+    const pid_t parent = glimmer_cli::startGlimmer({"render", script, "--size", "256x256", "--backend", "osmesa",
+                                                    "--timeout", "1", "-o", dir.file("o.png")},
+                                                   logs.path().string());
+    std::vector<pid_t> kids;
+    for (int i = 0; i < 400 && kids.empty(); ++i) {
+        kids = glimmer_cli::childrenOf(parent);
+        if (kids.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    ::kill(parent, SIGSTOP);
+    std::this_thread::sleep_for(std::chrono::seconds(6));  // the renderer loads, draws pass 1, starts pass 2
+    ::kill(parent, SIGCONT);
+    int status = 0;
+    ::waitpid(parent, &status, 0);
+    ASSERT_FALSE(kids.empty()) << "no renderer started: " << glimmer_cli::readAll(logs.file("stderr"));
+    EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 1);
+    EXPECT_EQ(glimmer_cli::readAll(logs.file("stderr")),
+              script + ":9:1: error: stopped after 1 s (--timeout 1): the pass that starts here was still drawing\n"
+                       "RenderToTexture\n^\n");
 }
 
 TEST(CliTimeout, AScriptThatFinishesInTimeIsUntouched) {
