@@ -145,6 +145,9 @@ EQUIVALENT = {
     "src/gl/renderer_prepare.cpp:53:e8f6be17": "prepare's errorCount() == errorsBefore made <=: the count only "
                                                "grows while prepare runs (Diagnostics::clear is never called in it), "
                                                "so it is never below",
+    "src/process/batch.cpp:136:569828d7": "the scheduler's skip of a slot with no worker, pid <= 0 made < 0: in "
+                                          "the parent a slot's pid is -1 (none, or fork failed) or a child's; 0 is "
+                                          "only the child's own view, and the child runs workerMain, which never returns",
     "src/process/watchdog.cpp:107:ffbacd55": "the child's progress pipe marked closed on a read of 1 byte, not at its "
                                              "end: records are written whole (under PIPE_BUF), so no read is 1 byte, "
                                              "and the end comes only as the child exits (it holds the write end to "
