@@ -303,6 +303,24 @@ TEST(CliWatch, AProgramWhosePictureNothingReadsIsRefusedAsNotBuilt) {
     EXPECT_EQ(ok.exitCode, 0) << ok.err;
 }
 
+// A Program the script never draws with has no pixels: a watch in its shader
+// is refused with that said, before anything else is asked of it.
+TEST(CliWatch, AProgramThatDrawsNothingIsRefused) {
+    TempDir dir;
+    fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "glman" / "pass.vert", dir.path() / "pass.vert");
+    writeFile(dir, "idle.frag", "#version 330 compatibility\nin vec2 vST;\nvoid main() {\n"
+                                "    float r = vST.s;\n    gl_FragColor = vec4(r, 0., 0., 1.);\n}\n");
+    writeFile(dir, "shown.frag", "#version 330 compatibility\nin vec2 vST;\n"
+                                 "void main() { gl_FragColor = vec4(0., vST.t, 0., 1.); }\n");
+    const std::string script = writeFile(dir, "idle.glib", "WindowSize 32 32\nVertex pass.vert\nFragment idle.frag\n"
+                                                           "Program Idle\nFragment shown.frag\nProgram Shown\nQuadXY 0 1\n");
+    RunResult r = runGlimmer({"render", script, "--backend", "osmesa", "--watch", "idle.frag:4:r", "-o", dir.file("w.png")});
+    EXPECT_EQ(r.exitCode, 1) << r.err;
+    EXPECT_EQ(r.err, script + ":4:1: error: --watch: Program Idle draws nothing, so idle.frag has no pixels to watch\n"
+                              "Program Idle\n^\n1 error, 0 warnings\n");
+    EXPECT_FALSE(fs::exists(dir.file("w.png")));
+}
+
 // A range whose numbers do not read as finite doubles is refused, whole: a
 // bound beyond a double's range (1e999) must not fall back to the value the
 // range held before (issue 40: the number's parse error accepted, a sampled
