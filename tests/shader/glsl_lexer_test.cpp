@@ -101,6 +101,9 @@ TEST(GlslLexer, CrLfIsOneNewlineAndNeverPartOfAToken) {
     EXPECT_EQ(tokens("a\r\n#if 1\r\n// c\r\nb \r", true),
               "Word 'a' 1:1\nNewline '\\r\\n' 1:2\nDirective '#if 1' 2:1\nNewline '\\r\\n' 2:6\nLineComment '// c' 3:1\n"
               "Newline '\\r\\n' 3:5\nWord 'b' 4:1\nSpace ' \\r' 4:2\n");
+    // Blanks before a line's end are one Space, up to the "\r\n" or "\n".
+    EXPECT_EQ(tokens("a \t \r\nb  \n", true),
+              "Word 'a' 1:1\nSpace ' \\x09 ' 1:2\nNewline '\\r\\n' 1:5\nWord 'b' 2:1\nSpace '  ' 2:2\nNewline '\\n' 2:4\n");
     // A continuation before "\r\n" continues too.
     EXPECT_EQ(tokens("#define X \\\r\n 1\r\nX"), "Directive '#define X \\\\r\\n 1' 1:1\nWord 'X' 3:1\n");
 }
