@@ -57,21 +57,20 @@ void warnUnsetUniforms(const ProgramDecl& decl, const std::vector<ActiveUniform>
         const bool scalar = u.size == 1 && (type == "float" || type == "int" || type == "uint");
         std::string value = type == "bool" ? "false" : scalar ? "0" : "all 0";
         const std::string& add = u.example;
+        std::string advice;
         if (!u.settable) {
             // No Program line can set it: the advice is the shader's.
             const bool unsignedInt = u.type == "uint" || u.type.rfind("uvec", 0) == 0;
-            diags.warning(scriptFile, decl.loc,
-                          fmt::format("Program {} reads uniform {} {}{} but the script never sets it, so it stays {}; "
-                                      "no GLIB form sets a {}: give it a value where the shader declares it{}",
-                                      decl.name, type, u.name, where, value, u.type,
-                                      unsignedInt ? fmt::format(", or declare it {}", u.type == "uint" ? "int" : "i" + u.type.substr(1)) : ""));
-            continue;
+            advice = fmt::format("no GLIB form sets a {}: give it a value where the shader declares it{}", u.type,
+                                 unsignedInt ? fmt::format(", or declare it {}", u.type == "uint" ? "int" : "i" + u.type.substr(1))
+                                             : "");
+        } else {
+            advice = fmt::format("give it a value{} on this Program line{}", scalar ? " or a slider" : "",
+                                 add.empty() || u.size > 1 ? std::string() : fmt::format(", e.g. '{}'", add));
         }
         diags.warning(scriptFile, decl.loc,
-                      fmt::format("Program {} reads uniform {} {}{} but the script never sets it, so it stays {}; "
-                                  "give it a value{} on this Program line{}",
-                                  decl.name, type, u.name, where, value, scalar && type != "uint" ? " or a slider" : "",
-                                  add.empty() || u.size > 1 ? std::string() : fmt::format(", e.g. '{}'", add)));
+                      fmt::format("Program {} reads uniform {} {}{} but the script never sets it, so it stays {}; {}",
+                                  decl.name, type, u.name, where, value, advice));
     }
 }
 

@@ -74,15 +74,12 @@ TEST(CliBatch, EachScriptIsRenderedOrReportedAndARunawayCostsOnlyItself) {
     EXPECT_EQ(same, 1);
 }
 
-// Issue 25: a report line is JSON whatever bytes a path or a diagnostic
-// holds. A script named in Latin-1 (not UTF-8) was written into the line
-// byte for byte, which no JSON reader takes; now each bad byte is U+FFFD.
 // --strict in a batch as in render: a float target the screen reads that
 // holds a NaN fails the script, says why in its report line, and writes no
 // picture.
 TEST(CliBatch, StrictFailsAScriptWhoseTargetHoldsANan) {
     TempDir dir;
-    for (const char* f : {"st.vert", "nan.frag"}) fs::copy_file(glimmer_cli::cliData(f), dir.path() / f);
+    for (const char* f : {"st.vert", "nan.frag"}) fs::copy_file(fs::path(GLIMMER_TEST_DATA) / "cli" / f, dir.path() / f);
     std::ofstream(dir.file("show.frag")) << "#version 330 compatibility\nuniform sampler2D uT;\nin vec2 vST;\n"
                                             "void main() { gl_FragColor = vec4(texture(uT, vST).rgb * 0.5, 1.); }\n";
     std::ofstream(dir.file("read.glib")) << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nTexture2D 6 16 16 RGBA16F\n"
@@ -100,6 +97,9 @@ TEST(CliBatch, StrictFailsAScriptWhoseTargetHoldsANan) {
     EXPECT_TRUE(reportLine(report[0]).at("output").is_null()) << report[0];
 }
 
+// Issue 25: a report line is JSON whatever bytes a path or a diagnostic
+// holds. A script named in Latin-1 (not UTF-8) was written into the line
+// byte for byte, which no JSON reader takes; now each bad byte is U+FFFD.
 TEST(CliBatch, AReportLineIsJsonWhenANameIsNotUtf8) {
     TempDir dir;
     const std::string latin1 = dir.file("J\xFCrgen.glib");  // Jürgen in Latin-1
