@@ -214,19 +214,13 @@ TEST(CliChildren, ASandboxedRenderersAddressSpaceIsBounded) {
     std::string script = writeRunawayScript(dir);
     pid_t parent = startGlimmer({"render", script, "--size", "64x64", "--backend", "osmesa", "--sandbox",
                                  "--max-memory", "100", "-o", dir.file("o.png")}, logs.path().string());
-    std::vector<pid_t> kids;
-    for (int i = 0; i < 200 && kids.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        kids = childrenOf(parent);
-    }
+    const std::vector<pid_t> kids = waitForChildren(parent, 1, 10);
     ASSERT_EQ(kids.size(), 1u) << "the sandboxed render made no child";
     std::ifstream limits("/proc/" + std::to_string(kids[0]) + "/limits");
     std::string line, found;
     while (std::getline(limits, line))
         if (line.rfind("Max address space", 0) == 0) found = line;
-    ::kill(parent, SIGKILL);
-    int status = 0;
-    ::waitpid(parent, &status, 0);
+    killAndReap(parent);
     // 100 MiB + 4096 MiB of headroom, in bytes.
     EXPECT_NE(found.find(std::to_string((100ull + 4096ull) << 20)), std::string::npos) << found;
     EXPECT_TRUE(waitUntilGone(kids[0], 10));
@@ -237,11 +231,7 @@ TEST(CliChildren, ASandboxedRenderersAddressSpaceIsBounded) {
 void expectChildrenDieWithTheParent(const std::vector<std::string>& args, int signal) {
     TempDir logs;
     pid_t parent = startGlimmer(args, logs.path().string());
-    std::vector<pid_t> kids;
-    for (int i = 0; i < 300 && kids.empty(); ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        kids = childrenOf(parent);
-    }
+    const std::vector<pid_t> kids = waitForChildren(parent, 1, 15);
     ASSERT_FALSE(kids.empty()) << "no child started: " << readAll(logs.file("stderr"));
     std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the child is drawing
     ::kill(parent, signal);
@@ -293,11 +283,7 @@ TEST(CliChildren, EachBatchWorkerHoldsOnlyItsOwnPipes) {
     fs::copy_file(script, second);
     pid_t parent = startGlimmer({"batch", script, second, "-o", out.path().string(), "--size", "64x64", "--backend",
                                  "osmesa", "--jobs", "2", "--timeout", "600"}, logs.path().string());
-    std::vector<pid_t> kids;
-    for (int i = 0; i < 300 && kids.size() < 2; ++i) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-        kids = childrenOf(parent);
-    }
+    const std::vector<pid_t> kids = waitForChildren(parent, 2, 15);
     // A worker closes the ends it inherits just after it is forked: looked
     // at in that moment it still holds them (seen in CI under load). So the
     // pipes are read again until each worker holds two of the parent's and
@@ -326,9 +312,7 @@ TEST(CliChildren, EachBatchWorkerHoldsOnlyItsOwnPipes) {
         if (settled()) break;
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
     }
-    ::kill(parent, SIGKILL);
-    int status = 0;
-    ::waitpid(parent, &status, 0);
+    killAndReap(parent);
     for (pid_t kid : kids) EXPECT_TRUE(waitUntilGone(kid, 10));
     ASSERT_EQ(kids.size(), 2u) << "two workers were not started: " << readAll(logs.file("stderr"));
     for (size_t k = 0; k < 2; ++k) {
@@ -349,12 +333,10 @@ TEST(CliOutputs, ASecondBatchIntoTheSameFolderIsRefused) {
     std::string script = writeRunawayScript(dir);
     pid_t first = startGlimmer({"batch", script, "-o", out.path().string(), "--size", "64x64", "--backend", "osmesa",
                                 "--jobs", "1"}, logs.path().string());
-    for (int i = 0; i < 300 && childrenOf(first).empty(); ++i) std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    waitForChildren(first, 1, 15);
     auto r = runGlimmer({"batch", "scripts/bloom.glib", "-o", out.path().string(), "--size", "16x16", "--backend",
                          "osmesa"});
-    ::kill(first, SIGKILL);
-    int status = 0;
-    ::waitpid(first, &status, 0);
+    killAndReap(first);
     EXPECT_EQ(r.exitCode, 2) << r.err;
     EXPECT_EQ(r.err, "glimmer: error: -o " + out.path().string() + ": another glimmer batch is writing into this "
                      "folder; wait for it to finish, or give each batch its own -o\n");

@@ -107,6 +107,22 @@ std::vector<pid_t> childrenOf(pid_t parent) {
     return out;
 }
 
+std::vector<pid_t> waitForChildren(pid_t parent, size_t count, double seconds) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    std::vector<pid_t> kids = childrenOf(parent);
+    while (kids.size() < count && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        kids = childrenOf(parent);
+    }
+    return kids;
+}
+
+void killAndReap(pid_t pid) {
+    ::kill(pid, SIGKILL);
+    int status = 0;
+    ::waitpid(pid, &status, 0);
+}
+
 bool waitUntilGone(pid_t pid, double seconds) {
     auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
     for (;;) {

@@ -36,9 +36,15 @@ RunResult runGlimmerWithFileSizeLimit(const std::vector<std::string>& args, long
 pid_t startGlimmer(const std::vector<std::string>& args, const std::string& logDir);
 // The pids whose parent is `parent`, from /proc.
 std::vector<pid_t> childrenOf(pid_t parent);
+// Waits up to `seconds` for `parent` to have `count` children, looking every
+// 5 ms (a test that stops the parent at once needs to see the child early):
+// the children seen last, fewer than `count` when the time ran out.
+std::vector<pid_t> waitForChildren(pid_t parent, size_t count, double seconds);
 // Waits up to `seconds` for `pid` to end (gone, or a zombie no one reaps);
 // true when it did.
 bool waitUntilGone(pid_t pid, double seconds);
+// Ends a glimmer startGlimmer started, at once (SIGKILL), and reaps it.
+void killAndReap(pid_t pid);
 
 // A fresh, empty folder under the system temp folder, removed at destruction.
 class TempDir {

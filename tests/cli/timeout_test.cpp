@@ -48,11 +48,7 @@ TEST(CliTimeout, PassesAnnouncedWhileGlimmerWasNotLookingAreRead) {
     const pid_t parent = glimmer_cli::startGlimmer({"render", script, "--size", "256x256", "--backend", "osmesa",
                                                     "--timeout", "1", "-o", dir.file("o.png")},
                                                    logs.path().string());
-    std::vector<pid_t> kids;
-    for (int i = 0; i < 400 && kids.empty(); ++i) {
-        kids = glimmer_cli::childrenOf(parent);
-        if (kids.empty()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    }
+    const std::vector<pid_t> kids = glimmer_cli::waitForChildren(parent, 1, 10);
     ::kill(parent, SIGSTOP);
     std::this_thread::sleep_for(std::chrono::seconds(10));  // the renderer loads, draws pass 1, starts pass 2 (under 1 s alone)
     ::kill(parent, SIGCONT);
