@@ -209,8 +209,13 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
     }
     std::string health = "unchecked";
     if (s.strict) {
+        // Only the bad targets' lines, as render --health prints them: a
+        // class's report would otherwise carry every target of every script.
         bool bad = false;
-        for (const auto& h : measureHealth(*renderer, loaded.plan)) bad |= h.bad();
+        for (const auto& h : measureHealth(*renderer, loaded.plan)) {
+            if (h.bad()) printed << formatHealth(h) << "\n";
+            bad |= h.bad();
+        }
         health = bad ? "bad" : "ok";
         if (bad) printed << "glimmer: error: --strict: a target holds NaN, Inf, negative or out-of-range values\n";
     }

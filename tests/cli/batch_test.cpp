@@ -92,7 +92,12 @@ TEST(CliBatch, StrictFailsAScriptWhoseTargetHoldsANan) {
     auto report = lines(readAll(dir.file("r.jsonl")));
     ASSERT_EQ(report.size(), 1u);
     EXPECT_EQ(reportLine(report[0]).value("health", ""), "bad") << report[0];
+    // The bad target named as render --health names it: nan.frag's 0/0
+    // where s and t are past 0.9, texel centres 14.5/16 and 15.5/16 each
+    // way, so 2x2 texels of three NaN channels, the first at column 14 of
+    // the top row.
     EXPECT_EQ(reportLine(report[0]).value("diagnostics", ""),
+              "health: unit 6 (RGBA16F 16x16): 12 NaN, 0 Inf, 0 negative, 0 above 65504; first bad pixel at 14,0\n"
               "glimmer: error: --strict: a target holds NaN, Inf, negative or out-of-range values\n") << report[0];
     EXPECT_TRUE(reportLine(report[0]).at("output").is_null()) << report[0];
 }
