@@ -139,6 +139,12 @@ int runRender(const RenderOptions& o) {
         if (o.frames > 1) progress.update(fmt::format("render: frame {}/{}", i + 1, o.frames));
     }
     progress.finish();
+    // A call the driver refused did nothing, and nothing else says so
+    // (gl/gl_api.h). Read once, after every frame: the error stays set
+    // until read, and each glGetError may wait on the driver.
+    std::string refused;
+    s.renderer->contextFailure(&refused);
+    if (!refused.empty() && verbosity() != Verbosity::Quiet) std::cerr << refused << "\n";
     const auto tw = Clock::now();
     if (out.kind == Output::Kind::Webp && !writeAnimatedWebp(o.output, frames, o.fps, why)) {
         std::cerr << "glimmer: error: " << why << "\n";

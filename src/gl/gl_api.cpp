@@ -2,6 +2,8 @@
 
 #include <cstring>
 
+#include <fmt/format.h>
+
 namespace glimmer {
 
 bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error) {
@@ -42,7 +44,8 @@ bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error) {
     return true;
 }
 
-std::string contextFailure(const GlApi& gl) {
+std::string contextFailure(const GlApi& gl, GLenum* refused) {
+    if (refused) *refused = GL_NO_ERROR;
     std::string why;
     if (gl.GetGraphicsResetStatus) {
         switch (gl.GetGraphicsResetStatus()) {
@@ -59,8 +62,19 @@ std::string contextFailure(const GlApi& gl) {
         if (!why.empty()) continue;
         if (e == GL_OUT_OF_MEMORY) why = "the GPU driver ran out of memory (GL_OUT_OF_MEMORY)";
         else if (e == 0x0507 /* GL_CONTEXT_LOST */) why = "the GL context was lost (GL_CONTEXT_LOST)";
+        else if (refused && *refused == GL_NO_ERROR) *refused = e;
     }
     return why;
+}
+
+std::string refusedCallWarning(GLenum error) {
+    const char* name = error == GL_INVALID_ENUM                    ? "GL_INVALID_ENUM"
+                       : error == GL_INVALID_VALUE                 ? "GL_INVALID_VALUE"
+                       : error == GL_INVALID_OPERATION             ? "GL_INVALID_OPERATION"
+                       : error == GL_INVALID_FRAMEBUFFER_OPERATION ? "GL_INVALID_FRAMEBUFFER_OPERATION"
+                                                                   : "an unknown error";
+    return fmt::format("glimmer: warning: the OpenGL driver refused a call while drawing ({}, 0x{:04X}): "
+                       "a step of the picture may be missing", name, error);
 }
 
 }  // namespace glimmer

@@ -80,7 +80,17 @@ bool loadGlApi(GlApi& gl, const GetProcAddress& getProc, std::string& error);
 // to, or "" when it can: a reset reported by the driver (guilty, innocent or
 // unknown), GL_CONTEXT_LOST, or GL_OUT_OF_MEMORY (a texture or buffer the
 // driver could not allocate draws as black). Drains glGetError; other errors
-// (a script's own misuse) are not failures of the machine.
-std::string contextFailure(const GlApi& gl);
+// are not failures of the machine: the first of them goes to `refused` when
+// given (GL_NO_ERROR if none), for refusedCallWarning.
+std::string contextFailure(const GlApi& gl, GLenum* refused = nullptr);
+
+// The warning for a call the driver refused while drawing (an error
+// glGetError held after the frame that is not a failure of the machine):
+// the call did nothing, so a step of the picture may be missing. A script
+// can cause one (two samplers of different types on one unit fail the
+// draw), and so can a renderer bug; either way the picture is not all the
+// script asked for, and a refused call is otherwise silent on llvmpipe and
+// a console line in a browser's WebGL.
+std::string refusedCallWarning(GLenum error);
 
 }  // namespace glimmer

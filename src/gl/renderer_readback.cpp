@@ -12,7 +12,12 @@ Image Renderer::readScreen() const {
     return readPicture(*gl_, screen_->fbo, screen_->width, screen_->height);
 }
 
-std::string Renderer::contextFailure() const { return glimmer::contextFailure(*gl_); }
+std::string Renderer::contextFailure(std::string* refused) const {
+    GLenum error = GL_NO_ERROR;
+    std::string why = glimmer::contextFailure(*gl_, &error);
+    if (refused) *refused = error == GL_NO_ERROR ? "" : refusedCallWarning(error);
+    return why;
+}
 
 Image Renderer::readTextureFloat(int texture) const {
     if (texture < 0 || size_t(texture) >= textures_.size() || !textures_[size_t(texture)].id) return {};

@@ -175,12 +175,14 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
             Image picture = renderer->readScreen();
             // A picture the GPU lost is no picture of the script's: no file,
             // no grade (the parent draws the job again in a fresh worker).
-            r.failure = renderer->contextFailure();
+            std::string refused;
+            r.failure = renderer->contextFailure(&refused);
             injectFault(job.script, picture, r.failure);
             if (!r.failure.empty()) {
                 printed << "glimmer: error: " << r.failure << "\n";
                 break;
             }
+            if (!refused.empty() && verbosity() != Verbosity::Quiet) printed << refused << "\n";
             std::string why;
             if (writePng(job.outputs[k], picture, why)) r.written.push_back(job.outputs[k]);
             else printed << "glimmer: error: " << why << "\n";
@@ -199,7 +201,8 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
     renderer->render(UniformValues(loaded.plan), 0);
     Image screen = renderer->readScreen();
     double renderMs = msSince(t1);
-    r.failure = renderer->contextFailure();
+    std::string refused;
+    r.failure = renderer->contextFailure(&refused);
     injectFault(job.script, screen, r.failure);
     if (!r.failure.empty()) {
         r.exitCode = 1;
@@ -207,6 +210,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
         r.json = resultJson(job, 1, r.diagnostics, "", prepareMs, renderMs, 0, "unchecked");
         return r;
     }
+    if (!refused.empty() && verbosity() != Verbosity::Quiet) printed << refused << "\n";
     std::string health = "unchecked";
     if (s.strict) {
         // Only the bad targets' lines, as render --health prints them: a

@@ -69,7 +69,9 @@ TEST(Wrap, ClampKeepsGlowOffTheOppositeEdge) {
             }
             // Clamping repeats the edge texel past it, mirroring reflects the
             // column back: both brighten the edge more than repeat does.
-            if (!repeats) EXPECT_GT(red(blur, 31, 16), 10 * (0.227f + 0.1945f)) << wrap;
+            if (!repeats) {
+                EXPECT_GT(red(blur, 31, 16), 10 * (0.227f + 0.1945f)) << wrap;
+            }
         }
     }
 }
