@@ -156,6 +156,13 @@ EQUIVALENT = {
     "src/process/child_guard.cpp:37:85e60e69": "a child whose parent died before prctl exits 255, not 1: its parent, "
                                                "the one glimmer that could read the code, is gone; the process that "
                                                "adopts it (init) reads no code",
+    "src/gl/shader_build.cpp:191:57a5bbda": "an initialiser of more than 4 values skipped, > 4 made > -1 (never, "
+                                            "size_t): takeUniformInitializers keeps a value only when its count is "
+                                            "its type's, a scalar's or vecN's (1 to 4), so no initialiser has more",
+    "src/gl/renderer_sliced.cpp:106:b9d611ab": "progress of a frame with nothing to draw 0.999 made 0.1: the viewer "
+                                               "asks only after renderSlice returned false, which stops only at a pass "
+                                               "needed and asked for, whose cost (rows >= 1 times a time per row > 0, "
+                                               "measured or the fallback) makes the total > 0",
 }
 JOURNAL = ".sample-journal.json"
 
