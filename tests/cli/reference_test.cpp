@@ -14,13 +14,6 @@ namespace cal = glimmer::calibration;
 
 namespace {
 
-glimmer::Image load(const std::string& path) {
-    glimmer::Image img;
-    std::string why;
-    EXPECT_TRUE(glimmer::loadImage(path, img, why)) << why;
-    return img;
-}
-
 TEST(CliReference, RenderAndItsBlurDumpMatchTheCpuReference) {
     TempDir dir;
     std::string why;
@@ -30,7 +23,7 @@ TEST(CliReference, RenderAndItsBlurDumpMatchTheCpuReference) {
                          "--dump", "6=" + dir.file("blur.png"), "--backend", "osmesa", "-o", dir.file("out.png")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
     glimmer::RgbImage in = cal::input(dir.path());
-    glimmer::Image out = load(dir.file("out.png")), blur = load(dir.file("blur.png"));
+    glimmer::Image out = loadPicture(dir.file("out.png")), blur = loadPicture(dir.file("blur.png"));
     ASSERT_EQ(out.width, cal::kW);
     ASSERT_EQ(out.height, cal::kH);
     std::string where;
@@ -53,7 +46,7 @@ TEST(CliReference, SheetCellsMatchTheCpuReference) {
                          "uHalfSize=1,5", "--size", std::to_string(cal::kW) + "x" + std::to_string(cal::kH),
                          "--backend", "osmesa", "-o", dir.file("sheet.png")});
     ASSERT_EQ(r.exitCode, 0) << r.err;
-    glimmer::Image sheet = load(dir.file("sheet.png"));
+    glimmer::Image sheet = loadPicture(dir.file("sheet.png"));
     glimmer::RgbImage in = cal::input(dir.path());
     // Where the cells are: the sheet's own layout (tests/cli/sheet_test.cpp
     // finds them on the sheet independently).

@@ -19,13 +19,6 @@ const char* kVert = "#version 330 compatibility\nout vec2 vST;\n"
                     "void main() { vST = gl_MultiTexCoord0.st; gl_Position = ftransform(); }\n";
 const char* kView = "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\n";
 
-glimmer::Image picture(const std::string& path) {
-    glimmer::Image img;
-    std::string why;
-    EXPECT_TRUE(glimmer::loadImage(path, img, why)) << why;
-    return img;
-}
-
 // Each integer and bool shape a Program line sets, read into the colour:
 // uN 3 of 4 in red; uV2.y + uV3.z + uV4.w = 2 + 3 + 4 = 9 of 12 in green;
 // uB in blue. An upload the driver refused would leave its uniform 0 or
@@ -50,7 +43,7 @@ TEST(CliRefusedCalls, IntAndBoolUniformsOfEverySizeArriveWithNoCallRefused) {
         EXPECT_EQ(r.err.find("warning"), std::string::npos) << r.err;
         std::string png;
         for (const auto& e : std::filesystem::directory_iterator(out.path())) png = e.path().string();
-        const glimmer::Image img = picture(png);
+        const glimmer::Image img = loadPicture(png);
         ASSERT_EQ(img.u8.size(), 16u * 16u * 4u);
         EXPECT_EQ(int(img.u8[(8 * 16 + 8) * 4 + 0]), 191);  // 0.75 of 255
         EXPECT_EQ(int(img.u8[(8 * 16 + 8) * 4 + 1]), 191);
