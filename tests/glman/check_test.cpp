@@ -65,6 +65,21 @@ TEST(GlmanCheck, UniformFormsThatDoNotFitAreWarnedAndConverted) {
     EXPECT_NEAR(int(pixel(r->screen, 86, 48)[2]), 54, 1);  // 0.2126 * 255
 }
 
+// A checkbox that is off, or written <0>/<1>, on a float or a vector: the
+// warning names the 0 or 1 used, and the picture shows it.
+TEST(GlmanCheck, ACheckboxOnANumberIsZeroWhenOffAndSaysSo) {
+    auto r = runPipeline(script("uniform_checkbox_off"), false, true);
+    ASSERT_TRUE(r->prepared) << r->printed();
+    EXPECT_EQ(r->messages(Severity::Warning),
+              (std::vector<std::string>{
+                  "uniform 'uFlag' is given a checkbox but its shader declares it float; 0 is used",
+                  "uniform 'uTint' is given a checkbox but its shader declares it vec3; every component is 0",
+                  "uniform 'uGrey' is given a checkbox but its shader declares it float; 1 is used"}));
+    EXPECT_EQ(int(pixel(r->screen, 10, 48)[0]), 0);    // uFlag
+    EXPECT_EQ(int(pixel(r->screen, 48, 48)[1]), 0);    // uTint
+    EXPECT_EQ(int(pixel(r->screen, 86, 48)[2]), 255);  // uGrey
+}
+
 // Issue 26: the conversions the first script does not reach, each read
 // back from its sixth of the picture (8-bit values of .2 = 51, .4 = 102, ...).
 TEST(GlmanCheck, MoreUniformFormsAreConvertedAsTheWarningsSay) {

@@ -7,6 +7,8 @@
 // into its blocks.
 #include <filesystem>
 #include <fstream>
+#include <set>
+#include <string_view>
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -14,6 +16,7 @@
 #include "backends/context.h"
 #include "pipeline/watch_picture.h"
 #include "pipeline/watch.h"
+#include "gl/gl_api.h"
 #include "render/render_harness.h"
 #include "common/test_folder.h"
 
@@ -361,6 +364,73 @@ TEST(WatchGpu, ARendererMadeAgainOnOneContextLeavesNoProgramsBehind) {
             live.push_back(livePrograms());
         }
         EXPECT_EQ(live, std::vector<int>(4, live.front()));
+    }
+}
+
+// The renderbuffers the renderer asked the driver for, and those it asked
+// to delete, seen at its GL table.
+using GenNames = void(GLAPIENTRY*)(GLsizei, GLuint*);
+using DeleteNames = void(GLAPIENTRY*)(GLsizei, const GLuint*);
+GenNames driverGenRenderbuffers = nullptr;
+DeleteNames driverDeleteRenderbuffers = nullptr;
+std::set<GLuint> renderbuffersMade;
+std::vector<GLuint> renderbuffersDeleted;
+void GLAPIENTRY genRenderbuffersSeen(GLsizei n, GLuint* names) {
+    driverGenRenderbuffers(n, names);
+    renderbuffersMade.insert(names, names + n);
+}
+void GLAPIENTRY deleteRenderbuffersSeen(GLsizei n, const GLuint* names) {
+    renderbuffersDeleted.insert(renderbuffersDeleted.end(), names, names + n);
+    driverDeleteRenderbuffers(n, names);
+}
+
+// Issue 40's sampled mutant watch_gpu.cpp:220 (two framebuffer names made
+// into a field of one, the second landing in the watch's depth buffer's
+// name): stopping a watch deletes only renderbuffers the renderer made. A
+// name it never made as one may be a depth buffer of the script's (names
+// are per kind, each counted from 1), which the next frame would then draw
+// without. The seed's watch on its screen pass, which has no depth.
+TEST(WatchGpu, StoppingAWatchDeletesOnlyRenderbuffersItMade) {
+    for (const std::string& backend : testing::testBackends()) {
+        SCOPED_TRACE(backend);
+        PlanOptions options;
+        options.width = options.height = 8;
+        Diagnostics diags;
+        LoadedScript loaded;
+        ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded));
+        BackendChoice choice;
+        ASSERT_TRUE(parseBackend(backend, choice));
+        std::string why;
+        auto context = createContext(choice, why);
+        ASSERT_TRUE(context) << why;
+        renderbuffersMade.clear();
+        renderbuffersDeleted.clear();
+        auto renderer = Renderer::create(
+            [&](const char* name) -> void* {
+                void* f = context->getProcAddress(name);
+                if (!f) return f;
+                if (std::string_view(name) == "glGenRenderbuffers") {
+                    driverGenRenderbuffers = reinterpret_cast<GenNames>(f);
+                    return reinterpret_cast<void*>(&genRenderbuffersSeen);
+                }
+                if (std::string_view(name) == "glDeleteRenderbuffers") {
+                    driverDeleteRenderbuffers = reinterpret_cast<DeleteNames>(f);
+                    return reinterpret_cast<void*>(&deleteRenderbuffersSeen);
+                }
+                return f;
+            },
+            why);
+        ASSERT_TRUE(renderer && loadAndUpload(*renderer, loaded, false, diags)) << why;
+        UniformValues values(loaded.plan);
+        WatchSpec spec;
+        ASSERT_TRUE(parseWatchSpec("bloom.frag:12:rgbblur", spec, why)) << why;
+        Watch watch;
+        ASSERT_TRUE(startWatch(spec, loaded.plan, *renderer, diags, watch));
+        ASSERT_TRUE(drawWatch(*renderer, watch, values, 0).drawn);
+        renderer->dropWatch();
+        for (GLuint name : renderbuffersDeleted)
+            EXPECT_TRUE(renderbuffersMade.count(name)) << "renderbuffer " << name << " deleted, never made";
+        renderer.reset();  // before its context
     }
 }
 
