@@ -167,6 +167,9 @@ EQUIVALENT = {
                                             "the write end was closed before the loop and the parent opens nothing "
                                             "since, so that close fails (EBADF), and the read end left open closes "
                                             "as main returns runWithTimeout's 1, its only caller",
+    "src/gl/renderer.cpp:182:573fe790": "clearIsHidden's `if (!mesh) return false` taken out: only a quad "
+                                        "(coversViewport) hides a Clear, a quad's mesh is always made, and a pass "
+                                        "drawn is a needed one, whose meshes uploadMeshes uploads, so it is never null",
 }
 JOURNAL = ".sample-journal.json"
 
