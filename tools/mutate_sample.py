@@ -170,6 +170,9 @@ EQUIVALENT = {
     "src/gl/renderer.cpp:182:573fe790": "clearIsHidden's `if (!mesh) return false` taken out: only a quad "
                                         "(coversViewport) hides a Clear, a quad's mesh is always made, and a pass "
                                         "drawn is a needed one, whose meshes uploadMeshes uploads, so it is never null",
+    "src/shader/uninitialized_globals.cpp:45:b7c26131": "an unmatched '[' tested as mate == 0, not == npos: npos "
+                                                        "is also >= to, so the test beside it returns false the same; "
+                                                        "a '[' after the name (k >= 1) is never matched by token 0",
 }
 JOURNAL = ".sample-journal.json"
 
