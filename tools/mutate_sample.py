@@ -173,6 +173,8 @@ EQUIVALENT = {
     "src/shader/uninitialized_globals.cpp:45:b7c26131": "an unmatched '[' tested as mate == 0, not == npos: npos "
                                                         "is also >= to, so the test beside it returns false the same; "
                                                         "a '[' after the name (k >= 1) is never matched by token 0",
+    "src/process/batch.cpp:28:8f498aad": "a slot's pid starting at 0, not -1: every test of a slot's pid is > 0 or "
+                                         "<= 0, where 0 and -1 agree, and a fork that fails sets -1 itself",
 }
 JOURNAL = ".sample-journal.json"
 

@@ -106,6 +106,20 @@ TEST(Grading, ThumbnailsAverageBoxes) {
     EXPECT_EQ(t.u8[0], 150);
 }
 
+// A box is rows as well as columns: horizontal stripes of 100 and 200,
+// one pixel tall, are 150 in a thumbnail of half the height (issue 40's
+// sampled mutant grading.cpp:148 took each box's first row only: 100).
+TEST(Grading, ThumbnailsAverageTheRowsOfABoxToo) {
+    Image p = Image::rgba8(2, 4);
+    for (int y = 0; y < 4; ++y)
+        for (int x = 0; x < 2; ++x) p.u8[(size_t(y) * 2 + size_t(x)) * 4] = y % 2 ? 200 : 100;
+    Image t = thumbnail(p, 2);
+    ASSERT_EQ(t.width, 1);
+    ASSERT_EQ(t.height, 2);
+    EXPECT_EQ(t.u8[0], 150);
+    EXPECT_EQ(t.u8[4], 150);
+}
+
 // The report's thumbnails (grading.h: thumbnail) show the picture: each
 // pixel the average of its own box, row by row. Four quadrants of four
 // colours, 200x96 into 50x24, boxes of 4x4 that never straddle two (issue
