@@ -80,6 +80,13 @@ void expectSameStats(const WatchStats& gpu, const WatchStats& cpu) {
 using testing::makeRig;
 using testing::Rig;
 
+// The seed bloom (scripts/bloom.glib) loaded at size x size.
+bool loadSeed(int size, Diagnostics& diags, LoadedScript& loaded) {
+    PlanOptions options;
+    options.width = options.height = size;
+    return loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded);
+}
+
 TEST(WatchGpu, CountsAndPictureEqualTheCpuReferenceOnTheSameFloats) {
     testing::TestFolder dir("watch_gpu");
     const fs::path data = fs::path(GLIMMER_TEST_DATA) / "cli/watch";
@@ -173,11 +180,9 @@ TEST(WatchGpu, StoppingAWatchLeavesTheScriptsTexturesAndItsPicture) {
     for (const std::string& backend : testing::testBackends()) {
         for (int size = 1; size <= 8; ++size) {
             SCOPED_TRACE(backend + " " + std::to_string(size) + "x" + std::to_string(size));
-            PlanOptions options;
-            options.width = options.height = size;
             Diagnostics diags;
             LoadedScript loaded;
-            ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded));
+            ASSERT_TRUE(loadSeed(size, diags, loaded));
             UniformValues values(loaded.plan);
             ASSERT_TRUE(values.applySet(loaded.plan, "uAdd=2", diags));
             Rig rig = makeRig(backend, loaded, diags);
@@ -326,11 +331,9 @@ void main( )
 TEST(WatchGpu, ARendererMadeAgainOnOneContextLeavesNoProgramsBehind) {
     for (const std::string& backend : testing::testBackends()) {
         SCOPED_TRACE(backend);
-        PlanOptions options;
-        options.width = options.height = 8;
         Diagnostics diags;
         LoadedScript loaded;
-        ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded));
+        ASSERT_TRUE(loadSeed(8, diags, loaded));
         UniformValues values(loaded.plan);
         Rig rig = makeRig(backend, loaded, diags);
         ASSERT_TRUE(rig.renderer) << rig.error;
@@ -351,7 +354,7 @@ TEST(WatchGpu, ARendererMadeAgainOnOneContextLeavesNoProgramsBehind) {
                                                 rig.error);
                 ASSERT_TRUE(rig.renderer) << rig.error;
                 LoadedScript again;
-                ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, again));
+                ASSERT_TRUE(loadSeed(8, diags, again));
                 ASSERT_TRUE(loadAndUpload(*rig.renderer, again, false, diags));
                 loaded = std::move(again);
             }
@@ -393,11 +396,9 @@ void GLAPIENTRY deleteRenderbuffersSeen(GLsizei n, const GLuint* names) {
 TEST(WatchGpu, StoppingAWatchDeletesOnlyRenderbuffersItMade) {
     for (const std::string& backend : testing::testBackends()) {
         SCOPED_TRACE(backend);
-        PlanOptions options;
-        options.width = options.height = 8;
         Diagnostics diags;
         LoadedScript loaded;
-        ASSERT_TRUE(loadScript(std::string(GLIMMER_SOURCE_DIR) + "/scripts/bloom.glib", options, diags, loaded));
+        ASSERT_TRUE(loadSeed(8, diags, loaded));
         BackendChoice choice;
         ASSERT_TRUE(parseBackend(backend, choice));
         std::string why;
