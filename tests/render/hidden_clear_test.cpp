@@ -68,6 +68,27 @@ TEST(HiddenClear, AScreenNoPassClearsIsOpaqueBlackWhereNothingIsDrawn) {
     }
 }
 
+// The same when a render-to-texture pass before it starts with a Clear:
+// only a screen pass's own Clear stands in for the black one (issue 40's
+// sampled mutant renderer_prepare.cpp:381 looked at the first pass of any
+// kind, and the corner read (0, 0, 0, 0)).
+TEST(HiddenClear, ATargetsClearDoesNotStandInForTheScreens) {
+    TestFolder dir("glimmer_unclear_target_");
+    writeCoveredClear(dir, false,
+                      "Texture2D 5 8 8\nRenderToTexture 5\nBackground 0 0 1\nClear\nRenderToTexture\n"
+                      "Ortho -1 1 -1 1\n",
+                      "0 .5");
+    PlanOptions options;
+    options.width = options.height = 32;
+    for (const auto& backend : testBackends()) {
+        Rendered r = renderScript(backend, (dir.path / "s.glib").string(), {}, {}, options);
+        ASSERT_TRUE(r.ok) << backend << ": " << r.error;
+        const std::uint8_t* corner = &r.screen.u8[0];
+        EXPECT_EQ(std::vector<int>(corner, corner + 4), (std::vector<int>{0, 0, 0, 255})) << backend;
+        EXPECT_EQ(greenAt(r.screen, 16, 16), 255) << backend;
+    }
+}
+
 // A quad as large as the view but moved up leaves the bottom half to the
 // Clear: the Clear is drawn and the background shows there, whichever side
 // of the quad the screen's corners are past.
