@@ -144,7 +144,7 @@ int runRender(const RenderOptions& o) {
     // until read, and each glGetError may wait on the driver.
     std::string refused;
     s.renderer->contextFailure(&refused);
-    if (!refused.empty() && verbosity() != Verbosity::Quiet) std::cerr << refused << "\n";
+    printWarning(std::cerr, refused);
     const auto tw = Clock::now();
     if (out.kind == Output::Kind::Webp && !writeAnimatedWebp(o.output, frames, o.fps, why)) {
         std::cerr << "glimmer: error: " << why << "\n";

@@ -43,4 +43,9 @@ void reportWrote(const std::string& what) {
     if (verbosity() != Verbosity::Quiet) std::cerr << "wrote " << what << "\n";
 }
 
+void printWarning(std::ostream& out, const std::string& line) {
+    if (line.empty() || verbosity() == Verbosity::Quiet) return;
+    out << line << "\n";
+}
+
 }  // namespace glimmer

@@ -35,4 +35,9 @@ private:
 // (512x512)"), on stderr; nothing under -q.
 void reportWrote(const std::string& what);
 
+// A warning line made elsewhere (e.g. gl_api.h's refusedCallWarning) onto
+// `out`, with its newline; nothing when it is empty or under -q. One place for
+// the -q rule, so render and batch's two paths cannot disagree on it.
+void printWarning(std::ostream& out, const std::string& line);
+
 }  // namespace glimmer

@@ -182,7 +182,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
                 printed << "glimmer: error: " << r.failure << "\n";
                 break;
             }
-            if (!refused.empty() && verbosity() != Verbosity::Quiet) printed << refused << "\n";
+            printWarning(printed, refused);
             std::string why;
             if (writePng(job.outputs[k], picture, why)) r.written.push_back(job.outputs[k]);
             else printed << "glimmer: error: " << why << "\n";
@@ -210,7 +210,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
         r.json = resultJson(job, 1, r.diagnostics, "", prepareMs, renderMs, 0, "unchecked");
         return r;
     }
-    if (!refused.empty() && verbosity() != Verbosity::Quiet) printed << refused << "\n";
+    printWarning(printed, refused);
     std::string health = "unchecked";
     if (s.strict) {
         // Only the bad targets' lines, as render --health prints them: a

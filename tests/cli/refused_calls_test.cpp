@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "cli/run_glimmer.h"
 #include "image/image.h"
@@ -77,6 +78,21 @@ TEST(CliRefusedCalls, ADrawTheDriverRefusedIsWarnedAfterTheFrame) {
     r = runGlimmer({"-q", "render", script, "-o", dir.file("o.png"), "--size", "16x16", "--backend", "osmesa"});
     EXPECT_EQ(r.exitCode, 0);
     EXPECT_EQ(r.err, "");
+    // batch says it where it says a script's warnings: the report's line for
+    // the script (stderr carries only failures); under -q not there either.
+    for (const bool quiet : {false, true}) {
+        SCOPED_TRACE(quiet ? "batch -q" : "batch");
+        std::vector<std::string> args = {"batch", script, "-o", dir.file("out"), "--report", dir.file("r.jsonl"),
+                                         "--size", "16x16", "--backend", "osmesa"};
+        if (quiet) args.insert(args.begin(), "-q");
+        r = runGlimmer(args);
+        EXPECT_EQ(r.exitCode, 0) << r.err;
+        const auto line = nlohmann::json::parse(readAll(dir.file("r.jsonl")), nullptr, false);
+        const std::string said = line.value("diagnostics", "?");
+        const std::string warning = "glimmer: warning: the OpenGL driver refused a call while drawing "
+                                    "(GL_INVALID_OPERATION, 0x0502): a step of the picture may be missing\n";
+        EXPECT_EQ(said.find(warning) != std::string::npos, !quiet) << said;
+    }
 }
 
 }  // namespace

@@ -134,20 +134,13 @@ TEST(HiddenClear, AHiddenClearIsNotIssuedUntilTheViewerMovesTheScene) {
     Diagnostics diags;
     LoadedScript loaded;
     ASSERT_TRUE(loadScript((dir.path / "s.glib").string(), options, diags, loaded));
-    BackendChoice choice;
-    ASSERT_TRUE(parseBackend(testBackends().front(), choice));
-    std::string why;
-    auto context = createContext(choice, why);
-    ASSERT_TRUE(context) << why;
-    auto renderer = Renderer::create(
-        [&](const char* name) -> void* {
-            void* f = context->getProcAddress(name);
-            if (std::string_view(name) != "glClear" || !f) return f;
-            driverClear = reinterpret_cast<decltype(&::glClear)>(f);
-            return reinterpret_cast<void*>(&countedClear);
-        },
-        why);
-    ASSERT_TRUE(renderer && loadAndUpload(*renderer, loaded, false, diags)) << why;
+    Rig rig = makeRig(testBackends().front(), loaded, diags, [](std::string_view name, void* driver) {
+        if (name != "glClear" || !driver) return driver;
+        driverClear = reinterpret_cast<decltype(&::glClear)>(driver);
+        return reinterpret_cast<void*>(&countedClear);
+    });
+    ASSERT_TRUE(rig.renderer) << rig.error;
+    Renderer* renderer = rig.renderer.get();
     const UniformValues values(loaded.plan);
 
     clearsIssued = 0;
@@ -169,7 +162,6 @@ TEST(HiddenClear, AHiddenClearIsNotIssuedUntilTheViewerMovesTheScene) {
     clearsIssued = 0;
     renderer->render(values, 0.0);
     EXPECT_EQ(clearsIssued, still) << "back to the script's view: hidden again";
-    renderer.reset();  // before its context
 }
 
 }  // namespace

@@ -41,25 +41,17 @@ TEST(LostContext, LoadingEndsWithAnErrorNotAHang) {
         Diagnostics diags;
         LoadedScript loaded;
         ASSERT_TRUE(loadScript((dir.path / "s.glib").string(), {}, diags, loaded)) << messages(diags);
-        BackendChoice choice;
-        ASSERT_TRUE(parseBackend(backend, choice));
-        std::string why;
-        auto context = createContext(choice, why);
-        ASSERT_TRUE(context) << why;
-        auto renderer = Renderer::create(
-            [&](const char* name) -> void* {
-                if (std::string_view(name) == "glGetError") return reinterpret_cast<void*>(&lostForEver);
-                return context->getProcAddress(name);
-            },
-            why);
-        ASSERT_TRUE(renderer) << why;
+        Rig rig = makeWrappedRig(backend, [](std::string_view name, void* driver) {
+            return name == "glGetError" ? reinterpret_cast<void*>(&lostForEver) : driver;
+        });
+        ASSERT_TRUE(rig.renderer) << rig.error;
+        Renderer& renderer = *rig.renderer;
         errorQueries = 0;
-        EXPECT_FALSE(loadAndUpload(*renderer, loaded, false, diags));
+        EXPECT_FALSE(loadAndUpload(renderer, loaded, false, diags));
         // Every wait gives up after at most 64 queries; loading has a few.
         EXPECT_LT(errorQueries, 1000) << "glGetError asked " << errorQueries << " times while loading";
         EXPECT_EQ(messages(diags), "OpenGL error 0x0507 while loading the script\n");
-        EXPECT_EQ(renderer->contextFailure(), "the GL context was lost (GL_CONTEXT_LOST)");
-        renderer.reset();  // before its context
+        EXPECT_EQ(renderer.contextFailure(), "the GL context was lost (GL_CONTEXT_LOST)");
     }
 }
 

@@ -2,10 +2,12 @@
 // and hands back pixels, for tests that compare them with a CPU reference.
 #pragma once
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <memory>
 #include <sstream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -61,7 +63,15 @@ struct Rig {
     std::string error;
 };
 
-inline Rig makeRig(const std::string& backend, LoadedScript& loaded, Diagnostics& diags) {
+// A test's hand on the GL table: called with each function's name and the
+// driver's function (null if the driver has none), it returns what the
+// renderer calls instead: the driver's, or a counter or stand-in of the test's.
+using ProcWrap = std::function<void*(std::string_view name, void* driver)>;
+
+// A context of `backend` and a renderer on it whose GL table goes through
+// `wrap` (none: the driver's functions), nothing loaded yet: a test that
+// expects loading to fail loads itself. `error` names the step that failed.
+inline Rig makeWrappedRig(const std::string& backend, const ProcWrap& wrap = {}) {
     Rig rig;
     BackendChoice choice;
     if (!parseBackend(backend, choice)) {
@@ -71,10 +81,21 @@ inline Rig makeRig(const std::string& backend, LoadedScript& loaded, Diagnostics
     std::string why;
     rig.context = createContext(choice, why);
     GlContext* context = rig.context.get();
-    if (context) rig.renderer = Renderer::create([context](const char* n) { return context->getProcAddress(n); }, why);
-    if (!rig.renderer) {
-        rig.error = "backend '" + backend + "' is unusable: " + why;
-    } else if (!loadAndUpload(*rig.renderer, loaded, false, diags)) {
+    if (context)
+        rig.renderer = Renderer::create(
+            [context, &wrap](const char* name) {
+                void* driver = context->getProcAddress(name);
+                return wrap ? wrap(name, driver) : driver;
+            },
+            why);
+    if (!rig.renderer) rig.error = "backend '" + backend + "' is unusable: " + why;
+    return rig;
+}
+
+inline Rig makeRig(const std::string& backend, LoadedScript& loaded, Diagnostics& diags,
+                   const ProcWrap& wrap = {}) {
+    Rig rig = makeWrappedRig(backend, wrap);
+    if (rig.renderer && !loadAndUpload(*rig.renderer, loaded, false, diags)) {
         rig.error = "prepare failed";
         rig.renderer.reset();
     }

@@ -399,30 +399,23 @@ TEST(WatchGpu, StoppingAWatchDeletesOnlyRenderbuffersItMade) {
         Diagnostics diags;
         LoadedScript loaded;
         ASSERT_TRUE(loadSeed(8, diags, loaded));
-        BackendChoice choice;
-        ASSERT_TRUE(parseBackend(backend, choice));
-        std::string why;
-        auto context = createContext(choice, why);
-        ASSERT_TRUE(context) << why;
         renderbuffersMade.clear();
         renderbuffersDeleted.clear();
-        auto renderer = Renderer::create(
-            [&](const char* name) -> void* {
-                void* f = context->getProcAddress(name);
-                if (!f) return f;
-                if (std::string_view(name) == "glGenRenderbuffers") {
-                    driverGenRenderbuffers = reinterpret_cast<GenNames>(f);
-                    return reinterpret_cast<void*>(&genRenderbuffersSeen);
-                }
-                if (std::string_view(name) == "glDeleteRenderbuffers") {
-                    driverDeleteRenderbuffers = reinterpret_cast<DeleteNames>(f);
-                    return reinterpret_cast<void*>(&deleteRenderbuffersSeen);
-                }
-                return f;
-            },
-            why);
-        ASSERT_TRUE(renderer && loadAndUpload(*renderer, loaded, false, diags)) << why;
+        testing::Rig rig = testing::makeRig(backend, loaded, diags, [](std::string_view name, void* driver) {
+            if (driver && name == "glGenRenderbuffers") {
+                driverGenRenderbuffers = reinterpret_cast<GenNames>(driver);
+                return reinterpret_cast<void*>(&genRenderbuffersSeen);
+            }
+            if (driver && name == "glDeleteRenderbuffers") {
+                driverDeleteRenderbuffers = reinterpret_cast<DeleteNames>(driver);
+                return reinterpret_cast<void*>(&deleteRenderbuffersSeen);
+            }
+            return driver;
+        });
+        ASSERT_TRUE(rig.renderer) << rig.error;
+        Renderer* renderer = rig.renderer.get();
         UniformValues values(loaded.plan);
+        std::string why;
         WatchSpec spec;
         ASSERT_TRUE(parseWatchSpec("bloom.frag:12:rgbblur", spec, why)) << why;
         Watch watch;
@@ -431,7 +424,6 @@ TEST(WatchGpu, StoppingAWatchDeletesOnlyRenderbuffersItMade) {
         renderer->dropWatch();
         for (GLuint name : renderbuffersDeleted)
             EXPECT_TRUE(renderbuffersMade.count(name)) << "renderbuffer " << name << " deleted, never made";
-        renderer.reset();  // before its context
     }
 }
 
