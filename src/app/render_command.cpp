@@ -10,6 +10,7 @@
 #include "pipeline/console.h"
 #include "pipeline/numeric_health.h"
 #include "process/output_guard.h"
+#include "process/test_fault.h"
 #include "process/session.h"
 #include "image/animation.h"
 #include "image/image.h"
@@ -114,10 +115,25 @@ int runRender(const RenderOptions& o) {
     Clock::duration writing{};  // the PNGs' share of the loop, reported as "write" with the dumps
     std::vector<Image> frames;  // for an animated file
     std::string why, first, last;
+    // A call the driver refused did nothing, and nothing else says so
+    // (gl/gl_api.h): the first, warned once after every frame.
+    std::string refused;
     Progress progress;
     for (int i = 0; i < o.frames; ++i) {
         s.renderer->render(*s.values, o.time + double(i) / o.fps);
         Image screen = s.renderer->readScreen();
+        // A lost or reset context reads back what it reads (zeros on
+        // NVIDIA): no file of it, an error that says why, as batch does.
+        // Asked after the read, which has already waited for the frame.
+        std::string refusedNow;
+        std::string failure = s.renderer->contextFailure(&refusedNow);
+        injectTestFault(o.script, screen, failure);
+        if (refused.empty()) refused = refusedNow;
+        if (!failure.empty()) {
+            progress.finish();
+            std::cerr << "glimmer: error: " << failure << "\n";
+            return kExitScriptError;
+        }
         bool ok = true;
         const auto tw = Clock::now();
         if (out.kind == Output::Kind::Stdout) {
@@ -139,11 +155,6 @@ int runRender(const RenderOptions& o) {
         if (o.frames > 1) progress.update(fmt::format("render: frame {}/{}", i + 1, o.frames));
     }
     progress.finish();
-    // A call the driver refused did nothing, and nothing else says so
-    // (gl/gl_api.h). Read once, after every frame: the error stays set
-    // until read, and each glGetError may wait on the driver.
-    std::string refused;
-    s.renderer->contextFailure(&refused);
     printWarning(std::cerr, refused);
     const auto tw = Clock::now();
     if (out.kind == Output::Kind::Webp && !writeAnimatedWebp(o.output, frames, o.fps, why)) {

@@ -1,6 +1,5 @@
 #include "process/batch_worker.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -23,6 +22,7 @@
 #include "pipeline/numeric_health.h"
 #include "pipeline/prepare_script.h"
 #include "plan/uniform_values.h"
+#include "process/test_fault.h"
 #include "util/json.h"
 #include "util/numbers.h"
 
@@ -47,45 +47,11 @@ std::string resultJson(const BatchJob& job, int exitCode, const std::string& dia
     return jsonLine(line);
 }
 
-// A fault a test puts in (tests/cli/batch_retry_test.cpp), since llvmpipe
-// never loses a context: GLIMMER_TEST_FAULT=KIND:TEXT:MARKER makes the
-// worker's picture of a script whose path holds TEXT lost to a GPU reset
-// (KIND "reset") or read back as zeros with no error (KIND "zeros", what an
-// NVIDIA worker reads after another process's kill); KIND "stuck" (TEXT
-// "context") makes a worker never finish making its context, as one waiting
-// behind a process stuck in NVIDIA's driver did on the H200. Once: the
-// worker that creates the file MARKER first; with MARKER empty, every time.
-struct Fault {
-    std::string kind, part, marker;
-};
-std::optional<Fault> faultAsked() {
-    const char* spec = std::getenv("GLIMMER_TEST_FAULT");
-    if (!spec) return std::nullopt;
-    const std::string text = spec;
-    const size_t a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
-    if (b == std::string::npos || b == a + 1) return std::nullopt;
-    return Fault{text.substr(0, a), text.substr(a + 1, b - a - 1), text.substr(b + 1)};
-}
-
-// Whether this drawing takes the fault (MARKER: the first to make the file).
-bool takesFault(const Fault& f) {
-    if (f.marker.empty()) return true;
-    const int fd = ::open(f.marker.c_str(), O_CREAT | O_EXCL | O_WRONLY, 0600);
-    if (fd < 0) return false;  // another drawing had it
-    ::close(fd);
-    return true;
-}
-
-void injectFault(const std::string& script, Image& picture, std::string& failure) {
-    const std::optional<Fault> f = faultAsked();
-    if (!f || script.find(f->part) == std::string::npos || f->kind == "stuck" || !takesFault(*f)) return;
-    if (f->kind == "reset") failure = "the GPU was reset by another process while this script drew (GLIMMER_TEST_FAULT)";
-    else if (f->kind == "zeros") std::fill(picture.u8.begin(), picture.u8.end(), std::uint8_t(0));
-}
-
+// GLIMMER_TEST_FAULT=stuck:context: (process/test_fault.h) a worker that
+// never finishes making its context.
 void stickIfAsked() {
-    const std::optional<Fault> f = faultAsked();
-    if (!f || f->kind != "stuck" || f->part != "context" || !takesFault(*f)) return;
+    const std::optional<TestFault> f = testFaultAsked();
+    if (!f || f->kind != "stuck" || f->part != "context" || !takesTestFault(*f)) return;
     for (;;) ::pause();  // until the parent's kill
 }
 
@@ -177,7 +143,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
             // no grade (the parent draws the job again in a fresh worker).
             std::string refused;
             r.failure = renderer->contextFailure(&refused);
-            injectFault(job.script, picture, r.failure);
+            injectTestFault(job.script, picture, r.failure);
             if (!r.failure.empty()) {
                 printed << "glimmer: error: " << r.failure << "\n";
                 break;
@@ -203,7 +169,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
     double renderMs = msSince(t1);
     std::string refused;
     r.failure = renderer->contextFailure(&refused);
-    injectFault(job.script, screen, r.failure);
+    injectTestFault(job.script, screen, r.failure);
     if (!r.failure.empty()) {
         r.exitCode = 1;
         r.diagnostics = printed.str() + "glimmer: error: " + r.failure + "\n";
@@ -356,7 +322,7 @@ bool readAll(int fd, void* data, size_t n) {
 }
 
 double contextLimitSeconds(const BatchSettings& s) {
-    const std::optional<Fault> f = faultAsked();
+    const std::optional<TestFault> f = testFaultAsked();
     return f && f->kind == "stuck" ? 2 : s.contextSeconds;
 }
 

@@ -30,12 +30,8 @@ using glimmer_cli::readAll;
 using glimmer_cli::writeSolid;
 using glimmer_cli::runGlimmer;
 using glimmer_cli::TempDir;
+using glimmer_cli::TestFaultEnv;
 
-// Sets GLIMMER_TEST_FAULT for the glimmer processes this test starts.
-struct Fault {
-    explicit Fault(const std::string& spec) { ::setenv("GLIMMER_TEST_FAULT", spec.c_str(), 1); }
-    ~Fault() { ::unsetenv("GLIMMER_TEST_FAULT"); }
-};
 
 // The PNG batch wrote for the script named `stem` (batch names it after the
 // whole path), or "" when there is none.
@@ -66,7 +62,7 @@ TEST(CliBatchRetry, APictureLostToAResetIsDrawnAgainAloneAndKept) {
     for (const std::string& a : std::vector<std::string>{"-o", dir.file("out"), "--report", dir.file("r.jsonl"), "--size",
                                                          "32x32", "--backend", "osmesa", "--jobs", "2"})
         args.push_back(a);
-    Fault fault("reset:lost.glib:" + marker.string());
+    TestFaultEnv fault("reset:lost.glib:" + marker.string());
     auto r = runGlimmer(args);
     EXPECT_TRUE(fs::exists(marker)) << "the fault never happened";
     EXPECT_EQ(r.exitCode, 0) << r.err;
@@ -84,7 +80,7 @@ TEST(CliBatchRetry, APictureLostToAResetIsDrawnAgainAloneAndKept) {
 TEST(CliBatchRetry, AResetOnEveryDrawingIsAnErrorThatSaysSoAndWritesNoPicture) {
     TempDir dir;
     const std::string good = writeSolid(dir, "good.glib", 0), lost = writeSolid(dir, "lost.glib", 1);
-    Fault fault("reset:lost.glib:");
+    TestFaultEnv fault("reset:lost.glib:");
     auto r = runGlimmer({"batch", good, lost, "-o", dir.file("out"), "--report", dir.file("r.jsonl"), "--size", "32x32",
                          "--backend", "osmesa", "--jobs", "2"});
     EXPECT_EQ(r.exitCode, 1) << r.err;
@@ -108,7 +104,7 @@ TEST(CliBatchRetry, AWorkerStuckBeforeItsContextIsReplacedAndTheBatchEnds) {
     const std::string a = writeSolid(dir, "a.glib", 0), b = writeSolid(dir, "b.glib", 1);
     const fs::path marker = dir.path() / "fault-happened";
     auto batch = [&](const std::string& spec, const std::string& out) {
-        Fault fault(spec);
+        TestFaultEnv fault(spec);
         return runGlimmer({"batch", a, b, "-o", dir.file(out), "--report", dir.file(out + ".jsonl"), "--size", "32x32",
                            "--backend", "osmesa", "--jobs", "2"},
                           60);
@@ -202,7 +198,7 @@ TEST(CliBatchRetry, ASingleColourIsAVerdictOnlyWhenAFreshWorkerDrawsItAgain) {
     }
     const fs::path marker = dir.path() / "fault-happened";
     auto grade = [&](const std::string& spec, const std::string& out) {
-        Fault fault(spec);
+        TestFaultEnv fault(spec);
         return runGlimmer({"batch", cls.string(), "--reference", (solution / "rings.glib").string(), "-o",
                            (dir.path() / out).string(), "--size", "64x64", "--backend", "osmesa", "--jobs", "2"},
                           120);

@@ -227,6 +227,9 @@ std::string writeSolid(const TempDir& dir, const std::string& name, int k) {
     return dir.file(name);
 }
 
+TestFaultEnv::TestFaultEnv(const std::string& spec) { ::setenv("GLIMMER_TEST_FAULT", spec.c_str(), 1); }
+TestFaultEnv::~TestFaultEnv() { ::unsetenv("GLIMMER_TEST_FAULT"); }
+
 std::string readAll(const std::filesystem::path& path) {
     std::ifstream f(path, std::ios::binary);
     return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};

@@ -71,6 +71,16 @@ int countOf(const std::string& haystack, const std::string& needle);
 // blue in turn), so scripts with different k give different PNGs.
 std::string writeSolid(const TempDir& dir, const std::string& name, int k);
 
+// Sets GLIMMER_TEST_FAULT (src/process/test_fault.h: a lost GPU picture,
+// zeros, a stuck worker) for the glimmer processes a test starts, until it
+// goes out of scope.
+struct TestFaultEnv {
+    explicit TestFaultEnv(const std::string& spec);
+    ~TestFaultEnv();
+    TestFaultEnv(const TestFaultEnv&) = delete;
+    TestFaultEnv& operator=(const TestFaultEnv&) = delete;
+};
+
 // The whole of a file as bytes ("" when it cannot be read).
 std::string readAll(const std::filesystem::path& path);
 

@@ -1,0 +1,33 @@
+// A GPU fault a test puts in, since llvmpipe never loses a context or reads
+// back zeros: GLIMMER_TEST_FAULT=KIND:TEXT:MARKER makes the picture of a
+// script whose path holds TEXT lost to a GPU reset (KIND "reset") or read
+// back as zeros with no error (KIND "zeros", what an NVIDIA worker reads
+// after another process's kill); KIND "stuck" (TEXT "context") makes a batch
+// worker never finish making its context, as one waiting behind a process
+// stuck in NVIDIA's driver did on the H200. Once: the drawing that creates
+// the file MARKER first; with MARKER empty, every time.
+// Used by batch's workers (tests/cli/batch_retry_test.cpp) and render
+// (tests/cli/render_lost_context_test.cpp). Unset, nothing happens.
+#pragma once
+#include <optional>
+#include <string>
+
+#include "image/image.h"
+
+namespace glimmer {
+
+struct TestFault {
+    std::string kind, part, marker;
+};
+
+// What GLIMMER_TEST_FAULT asks for, if anything well formed.
+std::optional<TestFault> testFaultAsked();
+
+// Whether this drawing takes the fault (MARKER: the first to make the file).
+bool takesTestFault(const TestFault& f);
+
+// A "reset" or "zeros" fault for `script`'s picture, if asked: `failure`
+// set as contextFailure would, or `picture` zeroed.
+void injectTestFault(const std::string& script, Image& picture, std::string& failure);
+
+}  // namespace glimmer
