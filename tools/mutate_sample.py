@@ -175,6 +175,12 @@ EQUIVALENT = {
                                                         "a '[' after the name (k >= 1) is never matched by token 0",
     "src/process/batch.cpp:28:8f498aad": "a slot's pid starting at 0, not -1: every test of a slot's pid is > 0 or "
                                          "<= 0, where 0 and -1 agree, and a fork that fails sets -1 itself",
+    "src/process/batch.cpp:59:1b52555e": "a worker's close(up[-1]) for close(up[0]): built at -O1 it reads the stack "
+                                         "word below up, the high half of the last call's return address into the "
+                                         "PIE binary (0x55xx-0x56xx, over 21,000, past the 20,000-descriptor limit), "
+                                         "so close fails (EBADF); the worker then keeps its result pipe's read end, "
+                                         "which it never reads and nothing sees: the parent closes its own end only "
+                                         "after killing the worker or when it is idle and writes nothing more",
 }
 JOURNAL = ".sample-journal.json"
 
