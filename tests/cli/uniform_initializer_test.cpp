@@ -21,7 +21,7 @@ TEST(CliUniformInitializers, TheDesktopKeepsThemAndDoesNotCallThemUnset) {
     EXPECT_EQ(r.err.find("never sets"), std::string::npos) << r.err;
     glimmer::Image img = loadPicture(dir.file("d.png"));
     ASSERT_EQ(img.u8.size(), 16u * 16u * 4u);
-    // uTint = (0, .5, 1), uY0 = 1, uSet = .5: red .25 s, green .5, blue .5.
+    // uTint = (0, .5, 1), uY0 = 1, uSlope = .25, uSet = .5: red .25 s, green .5, blue .5.
     const size_t right = (8 * 16 + 15) * 4;
     EXPECT_NEAR(img.u8[right + 0], 0.25 * 15.5 / 16 * 255, 2.0);
     EXPECT_EQ(img.u8[right + 1], 128);

@@ -367,5 +367,24 @@ TEST(CliWatch, ABlockCommentAfterADivisionInADefineEndsWhereItsStarSlashIs) {
         << inComment.err;
 }
 
+// A fragment stage's own `out` becomes a global wherever it is declared,
+// after a function too (issue 40: a function's closing brace taken for its
+// body's made everything after the first function look nested, and the
+// watch's outputs then clashed with the shader's at link).
+TEST(CliWatch, AnOutputDeclaredAfterAFunctionIsWatchedToo) {
+    TempDir dir;
+    std::ofstream(dir.file("s.glib")) << "Ortho -1. 1. -1. 1.\nVertex c.vert\nFragment c.frag\n"
+                                         "Program C uAdd <0. 1. 4.>\nQuadXY .2 2.\n";
+    std::ofstream(dir.file("c.vert")) << "#version 330 compatibility\nout vec2 vST;\n"
+                                         "void main() { vST = gl_MultiTexCoord0.st; gl_Position = ftransform(); }\n";
+    std::ofstream(dir.file("c.frag")) << "#version 330 core\nin vec2 vST;\nfloat halved(float x) { return x / 2.; }\n"
+                                         "layout(location = 0) out vec4 color;\nuniform float uAdd;\nvoid main() {\n"
+                                         "    float h = halved(uAdd);\n    color = vec4(h, vST, 1.);\n}\n";
+    auto r = runGlimmer({"render", dir.file("s.glib"), "--backend", "osmesa", "--size", "16x16", "--set", "uAdd=3",
+                         "--watch", "c.frag:7:h", "-o", dir.file("k.png")});
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    EXPECT_EQ(r.out, "watch c.frag:7 h, pass 1 (Program C): float over 16x16: range 1.5 .. 1.5 (its own)\n") << r.err;
+}
+
 }  // namespace
 }  // namespace glimmer_cli

@@ -46,6 +46,19 @@ TEST(UniformInitializers, NumbersAndConstructorsAreReadAndBlanked) {
               "uniform float uPlain;\n");
 }
 
+// A literal's suffix (GLSL 1.20's f, 1.30's u) is one letter, not part of its
+// value: 1.25f is 1.25 and 3u is 3 (issue 40: two letters dropped made them
+// 1. and nothing).
+TEST(UniformInitializers, ASuffixIsNotPartOfTheValue) {
+    UniformInitializers r = takeUniformInitializers("uniform float uF = 1.25f;\nuniform uint uU = 3u;\n"
+                                                    "uniform vec2 uV = vec2(.5F, 2.f);\n");
+    ASSERT_EQ(r.values.size(), 3u);
+    EXPECT_TRUE(r.unreadable.empty());
+    EXPECT_EQ(r.values[0].values, std::vector<float>({1.25f}));
+    EXPECT_EQ(r.values[1].values, std::vector<float>({3.f}));
+    EXPECT_EQ(r.values[2].values, std::vector<float>({.5f, 2.f}));
+}
+
 // Read the same in a decimal-comma locale (.ci/run runs every test program
 // again in German): strtof would stop at the '.'.
 TEST(UniformInitializers, ValuesDoNotDependOnTheLocale) {
