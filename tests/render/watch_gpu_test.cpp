@@ -370,46 +370,61 @@ TEST(WatchGpu, ARendererMadeAgainOnOneContextLeavesNoProgramsBehind) {
     }
 }
 
-// The renderbuffers the renderer asked the driver for, and those it asked
-// to delete, seen at its GL table.
+// The names of one kind of GL object the renderer holds, seen at its GL
+// table: made by glGen*, given back by glDelete*. A name it deletes that
+// it does not hold (never made as one, or deleted already) is stray: the
+// driver may have given that name to another holder since (a texture or
+// depth buffer of the script's, the panel's), whose object then goes.
 using GenNames = void(GLAPIENTRY*)(GLsizei, GLuint*);
 using DeleteNames = void(GLAPIENTRY*)(GLsizei, const GLuint*);
-GenNames driverGenRenderbuffers = nullptr;
-DeleteNames driverDeleteRenderbuffers = nullptr;
-std::set<GLuint> renderbuffersMade;
-std::vector<GLuint> renderbuffersDeleted;
-void GLAPIENTRY genRenderbuffersSeen(GLsizei n, GLuint* names) {
-    driverGenRenderbuffers(n, names);
-    renderbuffersMade.insert(names, names + n);
+struct NamesSeen {
+    GenNames driverGen = nullptr;
+    DeleteNames driverDelete = nullptr;
+    std::set<GLuint> held;
+    std::vector<GLuint> stray;
+};
+NamesSeen renderbuffers, textures;
+template <NamesSeen& seen>
+void GLAPIENTRY genSeen(GLsizei n, GLuint* names) {
+    seen.driverGen(n, names);
+    seen.held.insert(names, names + n);
 }
-void GLAPIENTRY deleteRenderbuffersSeen(GLsizei n, const GLuint* names) {
-    renderbuffersDeleted.insert(renderbuffersDeleted.end(), names, names + n);
-    driverDeleteRenderbuffers(n, names);
+template <NamesSeen& seen>
+void GLAPIENTRY deleteSeen(GLsizei n, const GLuint* names) {
+    for (GLsizei k = 0; k < n; ++k)
+        if (names[k] && !seen.held.erase(names[k])) seen.stray.push_back(names[k]);
+    seen.driverDelete(n, names);
+}
+template <NamesSeen& seen>
+void* seenAs(std::string_view name, std::string_view gen, std::string_view del, void* driver) {
+    if (driver && name == gen) {
+        seen.driverGen = reinterpret_cast<GenNames>(driver);
+        return reinterpret_cast<void*>(&genSeen<seen>);
+    }
+    if (driver && name == del) {
+        seen.driverDelete = reinterpret_cast<DeleteNames>(driver);
+        return reinterpret_cast<void*>(&deleteSeen<seen>);
+    }
+    return nullptr;
 }
 
-// Issue 40's sampled mutant watch_gpu.cpp:220 (two framebuffer names made
+// Issue 40's sampled mutants watch_gpu.cpp:220 (two framebuffer names made
 // into a field of one, the second landing in the watch's depth buffer's
-// name): stopping a watch deletes only renderbuffers the renderer made. A
-// name it never made as one may be a depth buffer of the script's (names
-// are per kind, each counted from 1), which the next frame would then draw
-// without. The seed's watch on its screen pass, which has no depth.
-TEST(WatchGpu, StoppingAWatchDeletesOnlyRenderbuffersItMade) {
+// name) and watch_gpu.cpp:208 (a stopped watch's float target's name kept,
+// deleted again by the next stop or start): a watch started, stopped,
+// started again and stopped deletes only names the renderer holds. The
+// seed's watch on its screen pass, which has no depth.
+TEST(WatchGpu, StoppingAWatchDeletesOnlyNamesItStillHolds) {
     for (const std::string& backend : testing::testBackends()) {
         SCOPED_TRACE(backend);
         Diagnostics diags;
         LoadedScript loaded;
         ASSERT_TRUE(loadSeed(8, diags, loaded));
-        renderbuffersMade.clear();
-        renderbuffersDeleted.clear();
+        renderbuffers = {};
+        textures = {};
         testing::Rig rig = testing::makeRig(backend, loaded, diags, [](std::string_view name, void* driver) {
-            if (driver && name == "glGenRenderbuffers") {
-                driverGenRenderbuffers = reinterpret_cast<GenNames>(driver);
-                return reinterpret_cast<void*>(&genRenderbuffersSeen);
-            }
-            if (driver && name == "glDeleteRenderbuffers") {
-                driverDeleteRenderbuffers = reinterpret_cast<DeleteNames>(driver);
-                return reinterpret_cast<void*>(&deleteRenderbuffersSeen);
-            }
+            if (void* f = seenAs<renderbuffers>(name, "glGenRenderbuffers", "glDeleteRenderbuffers", driver)) return f;
+            if (void* f = seenAs<textures>(name, "glGenTextures", "glDeleteTextures", driver)) return f;
             return driver;
         });
         ASSERT_TRUE(rig.renderer) << rig.error;
@@ -418,12 +433,14 @@ TEST(WatchGpu, StoppingAWatchDeletesOnlyRenderbuffersItMade) {
         std::string why;
         WatchSpec spec;
         ASSERT_TRUE(parseWatchSpec("bloom.frag:12:rgbblur", spec, why)) << why;
-        Watch watch;
-        ASSERT_TRUE(startWatch(spec, loaded.plan, *renderer, diags, watch));
-        ASSERT_TRUE(drawWatch(*renderer, watch, values, 0).drawn);
-        renderer->dropWatch();
-        for (GLuint name : renderbuffersDeleted)
-            EXPECT_TRUE(renderbuffersMade.count(name)) << "renderbuffer " << name << " deleted, never made";
+        for (int round = 0; round < 2; ++round) {
+            Watch watch;
+            ASSERT_TRUE(startWatch(spec, loaded.plan, *renderer, diags, watch));
+            ASSERT_TRUE(drawWatch(*renderer, watch, values, 0).drawn);
+            renderer->dropWatch();
+        }
+        for (GLuint name : renderbuffers.stray) ADD_FAILURE() << "renderbuffer " << name << " deleted, not held";
+        for (GLuint name : textures.stray) ADD_FAILURE() << "texture " << name << " deleted, not held";
     }
 }
 
