@@ -9,6 +9,7 @@
 #include "pipeline/console.h"
 #include "pipeline/watch.h"
 #include "process/session.h"
+#include "process/test_fault.h"
 
 namespace glimmer {
 
@@ -74,7 +75,17 @@ int runRenderWatch(const RenderOptions& o, Session& s) {
         return kExitScriptError;
     }
     const bool floats = !endsWith(o.output, ".png");
-    const Image written = floats ? s.renderer->readWatchCapture().value : s.renderer->readWatchPicture();
+    Image written = floats ? s.renderer->readWatchCapture().value : s.renderer->readWatchPicture();
+    // As render's frames (render_command.cpp): what a lost or reset context
+    // read back is not the script's, and its summary is not either.
+    std::string refused;
+    std::string failure = s.renderer->contextFailure(&refused);
+    injectTestFault(o.script, written, failure);
+    if (!failure.empty()) {
+        std::cerr << "glimmer: error: " << failure << "\n";
+        return kExitScriptError;
+    }
+    printWarning(std::cerr, refused);
     if (!writeImage(o.output, written, why)) {
         std::cerr << "glimmer: error: " << why << "\n";
         return kExitScriptError;

@@ -32,6 +32,17 @@ TEST(CliRenderLostContext, APictureLostToAResetIsAnErrorAndNoFile) {
         EXPECT_EQ(r.exitCode, 1) << r.err;
         EXPECT_FALSE(fs::exists(dir.file("f000.png")));
     }
+    {
+        // A watch's values and summary are read the same way: no summary, no file.
+        TestFaultEnv fault("reset:scripts/bloom.glib:");
+        auto w = runGlimmer({"-q", "render", "scripts/bloom.glib", "--backend", "osmesa", "--size", "16x16", "--watch",
+                             "bloom.frag:12:rgbblur", "-o", dir.file("w.pfm")});
+        EXPECT_EQ(w.exitCode, 1) << w.err;
+        EXPECT_EQ(w.out, "");
+        EXPECT_EQ(w.err, "glimmer: error: the GPU was reset by another process while this script drew "
+                         "(GLIMMER_TEST_FAULT)\n");
+        EXPECT_FALSE(fs::exists(dir.file("w.pfm")));
+    }
     // The same command with no fault: the picture, so the fault was the cause.
     auto r = runGlimmer(args);
     EXPECT_EQ(r.exitCode, 0) << r.err;
