@@ -340,6 +340,15 @@ TEST(CliWatch, ARangeWhoseBoundsAreNotFiniteNumbersIsRefused) {
     }
 }
 
+// s.glib in `dir`: one Program C (uAdd <0. 1. 4.>) of c.vert and c.frag,
+// with those texts, on a quad over the screen.
+void writeOneProgram(const TempDir& dir, const std::string& vert, const std::string& frag) {
+    std::ofstream(dir.file("s.glib")) << "Ortho -1. 1. -1. 1.\nVertex c.vert\nFragment c.frag\n"
+                                         "Program C uAdd <0. 1. 4.>\nQuadXY .2 2.\n";
+    std::ofstream(dir.file("c.vert")) << vert;
+    std::ofstream(dir.file("c.frag")) << frag;
+}
+
 // A directive's end is found by the GLSL lexer: a block comment opened on a
 // '#define' line runs on to its "*/", even after a '/' of division on that
 // line. Read wrong, the comment's second line becomes code and its '{'
@@ -347,15 +356,14 @@ TEST(CliWatch, ARangeWhoseBoundsAreNotFiniteNumbersIsRefused) {
 // the "//" test no test caught).
 TEST(CliWatch, ABlockCommentAfterADivisionInADefineEndsWhereItsStarSlashIs) {
     TempDir dir;
-    std::ofstream(dir.file("s.glib")) << "Ortho -1. 1. -1. 1.\nVertex c.vert\nFragment c.frag\n"
-                                         "Program C uAdd <0. 1. 4.>\nQuadXY .2 2.\n";
-    std::ofstream(dir.file("c.vert")) << "#version 120\nvarying vec2 vST;\nvoid main() { vST = gl_MultiTexCoord0.st; "
-                                         "gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n";
-    std::ofstream(dir.file("c.frag")) << "#version 120\n"
-                                         "#define HALF(x) ((x)/2.) /* half of x; the comment goes on\n"
-                                         "   to a second line { and a brace */\n"
-                                         "uniform float uAdd;\nvarying vec2 vST;\nvoid main() {\n"
-                                         "    float h = HALF(uAdd);\n    gl_FragColor = vec4(h, vST, 1.);\n}\n";
+    writeOneProgram(dir,
+                    "#version 120\nvarying vec2 vST;\nvoid main() { vST = gl_MultiTexCoord0.st; "
+                    "gl_Position = gl_ModelViewProjectionMatrix * gl_Vertex; }\n",
+                    "#version 120\n"
+                    "#define HALF(x) ((x)/2.) /* half of x; the comment goes on\n"
+                    "   to a second line { and a brace */\n"
+                    "uniform float uAdd;\nvarying vec2 vST;\nvoid main() {\n"
+                    "    float h = HALF(uAdd);\n    gl_FragColor = vec4(h, vST, 1.);\n}\n");
     auto inMain = runGlimmer({"check", dir.file("s.glib"), "--watch", "c.frag:7:uAdd"});
     EXPECT_EQ(inMain.exitCode, 0) << inMain.err;
     EXPECT_EQ(inMain.out, "watch c.frag:7 uAdd, pass 1 (Program C): can be watched\n") << inMain.err;
@@ -373,13 +381,12 @@ TEST(CliWatch, ABlockCommentAfterADivisionInADefineEndsWhereItsStarSlashIs) {
 // watch's outputs then clashed with the shader's at link).
 TEST(CliWatch, AnOutputDeclaredAfterAFunctionIsWatchedToo) {
     TempDir dir;
-    std::ofstream(dir.file("s.glib")) << "Ortho -1. 1. -1. 1.\nVertex c.vert\nFragment c.frag\n"
-                                         "Program C uAdd <0. 1. 4.>\nQuadXY .2 2.\n";
-    std::ofstream(dir.file("c.vert")) << "#version 330 compatibility\nout vec2 vST;\n"
-                                         "void main() { vST = gl_MultiTexCoord0.st; gl_Position = ftransform(); }\n";
-    std::ofstream(dir.file("c.frag")) << "#version 330 core\nin vec2 vST;\nfloat halved(float x) { return x / 2.; }\n"
-                                         "layout(location = 0) out vec4 color;\nuniform float uAdd;\nvoid main() {\n"
-                                         "    float h = halved(uAdd);\n    color = vec4(h, vST, 1.);\n}\n";
+    writeOneProgram(dir,
+                    "#version 330 compatibility\nout vec2 vST;\n"
+                    "void main() { vST = gl_MultiTexCoord0.st; gl_Position = ftransform(); }\n",
+                    "#version 330 core\nin vec2 vST;\nfloat halved(float x) { return x / 2.; }\n"
+                    "layout(location = 0) out vec4 color;\nuniform float uAdd;\nvoid main() {\n"
+                    "    float h = halved(uAdd);\n    color = vec4(h, vST, 1.);\n}\n");
     auto r = runGlimmer({"render", dir.file("s.glib"), "--backend", "osmesa", "--size", "16x16", "--set", "uAdd=3",
                          "--watch", "c.frag:7:h", "-o", dir.file("k.png")});
     EXPECT_EQ(r.exitCode, 0) << r.err;
