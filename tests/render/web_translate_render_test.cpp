@@ -3,9 +3,14 @@
 // compiles and links there with the names the renderer looks up, and a
 // compatibility-profile script drawn on ES through it is the picture the
 // desktop draws from the untranslated shaders.
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+
 #include <gtest/gtest.h>
 
 #include "backends/context.h"
+#include "common/test_folder.h"
 #include "gl/gl_api.h"
 #include "gl/shader_build.h"
 #include "render_harness.h"
@@ -155,6 +160,43 @@ TEST(WebTranslateOnEs, TheSeedBloomDrawsTheDesktopsPicture) {
     const std::vector<std::string> sets{"uAdd=2", "uHalfSize=5"};
     expectSamePicture(renderScript("osmesa", script, sets, {}, options), renderScript("egl-gles", script, sets, {}, options),
                       128);
+}
+
+// OpenGL ES reads a float target only as floats; the renderer turns them
+// into bytes as the desktop's glGetTexImage does: each value clamped to 0..1,
+// times 255, rounded. What the page's viewer saves when a float target is on
+// show ("S"). Values below 0, between, and over 1, against the CPU's clamp of
+// the floats read back (issue 40: a sampled mutant made those below 0 white).
+TEST(WebTranslateOnEs, AFloatTargetReadAsBytesIsClampedAsOnTheDesktop) {
+    TestFolder dir("glimmer_es_float_bytes_");
+    std::ofstream(dir.path / "v.vert") << "#version 330 compatibility\nout vec2 vST;\n"
+                                          "void main() { vST = gl_MultiTexCoord0.st; gl_Position = ftransform(); }\n";
+    std::ofstream(dir.path / "f.frag") << "#version 330 compatibility\nin vec2 vST;\n"
+                                          "void main() { gl_FragColor = vec4(vST.s * 4. - 2., -1., .5, 3.); }\n";
+    std::ofstream(dir.path / "s.glib") << "Ortho -1 1 -1 1\nLookAt 0 0 1  0 0 0  0 1 0\nTexture2D 5 16 16 RGBA16F\n"
+                                          "RenderToTexture 5\nVertex v.vert\nFragment f.frag\nProgram P\nQuadXY 0 1\n"
+                                          "RenderToTexture\n";
+    PlanOptions options;
+    options.width = options.height = 16;
+    for (const char* backend : {"egl-gles", "osmesa"}) {
+        SCOPED_TRACE(backend);
+        Rendered r = renderScript(backend, (dir.path / "s.glib").string(), {}, {5}, options);
+        ASSERT_TRUE(r.ok) << r.error;
+        const Image& bytes = r.units[5];
+        const Image& floats = r.floats[5];
+        ASSERT_EQ(bytes.u8.size(), 16u * 16u * 4u);
+        ASSERT_EQ(floats.f32.size(), bytes.u8.size());
+        int below = 0, over = 0, worst = 0;
+        for (size_t i = 0; i < bytes.u8.size(); ++i) {
+            const float v = floats.f32[i];
+            below += v < 0, over += v > 1;
+            const int want = int(std::nearbyint(std::clamp(v, 0.f, 1.f) * 255.f));
+            worst = std::max(worst, std::abs(int(bytes.u8[i]) - want));
+        }
+        EXPECT_GT(below, 16 * 16) << "the picture has values below 0";
+        EXPECT_GT(over, 16 * 16) << "and over 1";
+        EXPECT_EQ(worst, 0) << "bytes unlike the clamped floats";
+    }
 }
 
 }  // namespace
