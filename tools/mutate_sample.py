@@ -175,6 +175,10 @@ EQUIVALENT = {
                                                         "a '[' after the name (k >= 1) is never matched by token 0",
     "src/process/batch.cpp:28:8f498aad": "a slot's pid starting at 0, not -1: every test of a slot's pid is > 0 or "
                                          "<= 0, where 0 and -1 agree, and a fork that fails sets -1 itself",
+    "src/gl/renderer.h:158:3d1ab648": "the texel-rate probe's default warm-up 200 ms made 201: it only draws that "
+                                       "much longer before the timed runs (for a GPU to raise its clocks); what is "
+                                       "timed and every output but a time, which 1 ms of warm-up moves less than "
+                                       "run-to-run noise, are the same",
     "src/process/batch.cpp:59:1b52555e": "a worker's close(up[-1]) for close(up[0]): built at -O1 it reads the stack "
                                          "word below up, the high half of the last call's return address into the "
                                          "PIE binary (0x55xx-0x56xx, over 21,000, past the 20,000-descriptor limit), "
