@@ -27,10 +27,13 @@ bool takesTestFault(const TestFault& f) {
 }
 
 void injectTestFault(const std::string& script, Image& picture, std::string& failure) {
+    static bool broken = false;  // this process took a "broken" fault
     const std::optional<TestFault> f = testFaultAsked();
-    if (!f || script.find(f->part) == std::string::npos || f->kind == "stuck" || !takesTestFault(*f)) return;
+    if (!f || script.find(f->part) == std::string::npos || f->kind == "stuck") return;
+    if (!(f->kind == "broken" && broken) && !takesTestFault(*f)) return;
     if (f->kind == "reset") failure = "the GPU was reset by another process while this script drew (GLIMMER_TEST_FAULT)";
-    else if (f->kind == "zeros") std::fill(picture.u8.begin(), picture.u8.end(), std::uint8_t(0));
+    else if (f->kind == "zeros" || f->kind == "broken") std::fill(picture.u8.begin(), picture.u8.end(), std::uint8_t(0));
+    broken = broken || f->kind == "broken";
 }
 
 }  // namespace glimmer

@@ -4,8 +4,10 @@
 // back as zeros with no error (KIND "zeros", what an NVIDIA worker reads
 // after another process's kill); KIND "stuck" (TEXT "context") makes a batch
 // worker never finish making its context, as one waiting behind a process
-// stuck in NVIDIA's driver did on the H200. Once: the drawing that creates
-// the file MARKER first; with MARKER empty, every time.
+// stuck in NVIDIA's driver did on the H200; KIND "broken" is "zeros" for
+// every later drawing of that process too (a context left broken: only a
+// fresh worker draws right). Once: the drawing that creates the file MARKER
+// first; with MARKER empty, every time.
 // Used by batch's workers (tests/cli/batch_retry_test.cpp) and render
 // (tests/cli/render_lost_context_test.cpp). Unset, nothing happens.
 #pragma once

@@ -197,10 +197,10 @@ TEST(CliBatchRetry, ASingleColourIsAVerdictOnlyWhenAFreshWorkerDrawsItAgain) {
         for (const char* f : {"rings.glib", "rings.frag", "st.vert"}) fs::copy_file(solution / f, cls / who / f);
     }
     const fs::path marker = dir.path() / "fault-happened";
-    auto grade = [&](const std::string& spec, const std::string& out) {
+    auto grade = [&](const std::string& spec, const std::string& out, const char* jobs = "2") {
         TestFaultEnv fault(spec);
         return runGlimmer({"batch", cls.string(), "--reference", (solution / "rings.glib").string(), "-o",
-                           (dir.path() / out).string(), "--size", "64x64", "--backend", "osmesa", "--jobs", "2"},
+                           (dir.path() / out).string(), "--size", "64x64", "--backend", "osmesa", "--jobs", jobs},
                           120);
     };
     auto r = grade("zeros:/ben/:" + marker.string(), "once");
@@ -208,6 +208,15 @@ TEST(CliBatchRetry, ASingleColourIsAVerdictOnlyWhenAFreshWorkerDrawsItAgain) {
     EXPECT_EQ(r.exitCode, 0) << r.err;
     const std::string once = readAll(dir.path() / "once" / "grades.csv");
     EXPECT_NE(once.find("\nben,100,pass,"), std::string::npos) << once;
+    // A worker left broken (zeros from then on): the second drawing is in a
+    // fresh worker, never the one that drew the first, even when it is the
+    // only one (issue 40: a used worker 0 kept for the lone drawing).
+    const fs::path brokenMarker = dir.path() / "broken-happened";
+    r = grade("broken:/ben/:" + brokenMarker.string(), "broken", "1");
+    EXPECT_TRUE(fs::exists(brokenMarker)) << "the fault never happened";
+    EXPECT_EQ(r.exitCode, 0) << r.err;
+    const std::string broken = readAll(dir.path() / "broken" / "grades.csv");
+    EXPECT_NE(broken.find("\nben,100,pass,"), std::string::npos) << broken;
     // Zeros on every drawing: then it is the verdict, said as before.
     r = grade("zeros:/ben/:", "always");
     const std::string always = readAll(dir.path() / "always" / "grades.csv");
