@@ -179,6 +179,9 @@ EQUIVALENT = {
                                        "much longer before the timed runs (for a GPU to raise its clocks); what is "
                                        "timed and every output but a time, which 1 ms of warm-up moves less than "
                                        "run-to-run noise, are the same",
+    "src/gl/shader_build.cpp:246:fb6e23dc": "makeProgram's stage loop `k < size` made `k != size`: k starts at 0 and "
+                                            "grows by one, and the body changes neither k nor the stages, so both stop "
+                                            "at the same place",
     "src/process/batch.cpp:59:1b52555e": "a worker's close(up[-1]) for close(up[0]): built at -O1 it reads the stack "
                                          "word below up, the high half of the last call's return address into the "
                                          "PIE binary (0x55xx-0x56xx, over 21,000, past the 20,000-descriptor limit), "
