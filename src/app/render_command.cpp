@@ -126,8 +126,7 @@ int runRender(const RenderOptions& o) {
         // NVIDIA): no file of it, an error that says why, as batch does.
         // Asked after the read, which has already waited for the frame.
         std::string refusedNow;
-        std::string failure = s.renderer->contextFailure(&refusedNow);
-        injectTestFault(o.script, screen, failure);
+        const std::string failure = pictureFailure(*s.renderer, o.script, screen, &refusedNow);
         if (refused.empty()) refused = refusedNow;
         if (!failure.empty()) {
             progress.finish();

@@ -79,8 +79,7 @@ int runRenderWatch(const RenderOptions& o, Session& s) {
     // As render's frames (render_command.cpp): what a lost or reset context
     // read back is not the script's, and its summary is not either.
     std::string refused;
-    std::string failure = s.renderer->contextFailure(&refused);
-    injectTestFault(o.script, written, failure);
+    const std::string failure = pictureFailure(*s.renderer, o.script, written, &refused);
     if (!failure.empty()) {
         std::cerr << "glimmer: error: " << failure << "\n";
         return kExitScriptError;

@@ -201,9 +201,10 @@ public:
     Image readScreen() const;
     // Whether what was drawn and read so far can be trusted: "" or why not
     // (a GPU reset, a lost context, the driver out of memory; gl/gl_api.h's
-    // contextFailure). batch's workers ask after every picture, render after
-    // its frames. `refused`, when given, gets the warning for a call the
-    // driver refused meanwhile (gl_api.h's refusedCallWarning), or "".
+    // contextFailure). batch's workers and render ask after every picture
+    // (process/test_fault.h's pictureFailure). `refused`, when given, gets
+    // the warning for a call the driver refused meanwhile (gl_api.h's
+    // refusedCallWarning), or "".
     std::string contextFailure(std::string* refused = nullptr) const;
     // A texture of the plan (a render target or a loaded image), row 0 at the
     // top; empty if it was never made because nothing needed it.

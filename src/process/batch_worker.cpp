@@ -142,8 +142,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
             // A picture the GPU lost is no picture of the script's: no file,
             // no grade (the parent draws the job again in a fresh worker).
             std::string refused;
-            r.failure = renderer->contextFailure(&refused);
-            injectTestFault(job.script, picture, r.failure);
+            r.failure = pictureFailure(*renderer, job.script, picture, &refused);
             if (!r.failure.empty()) {
                 printed << "glimmer: error: " << r.failure << "\n";
                 break;
@@ -168,8 +167,7 @@ BatchResult renderOne(const BatchJob& job, const BatchSettings& s, GlContext* co
     Image screen = renderer->readScreen();
     double renderMs = msSince(t1);
     std::string refused;
-    r.failure = renderer->contextFailure(&refused);
-    injectTestFault(job.script, screen, r.failure);
+    r.failure = pictureFailure(*renderer, job.script, screen, &refused);
     if (!r.failure.empty()) {
         r.exitCode = 1;
         r.diagnostics = printed.str() + "glimmer: error: " + r.failure + "\n";

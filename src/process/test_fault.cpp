@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <cstdlib>
 
+#include "gl/renderer.h"
+
 namespace glimmer {
 
 std::optional<TestFault> testFaultAsked() {
@@ -26,6 +28,10 @@ bool takesTestFault(const TestFault& f) {
     return true;
 }
 
+namespace {
+
+// A "reset", "zeros" or "broken" fault for `script`'s picture, if asked:
+// `failure` set as contextFailure would, or `picture` zeroed.
 void injectTestFault(const std::string& script, Image& picture, std::string& failure) {
     static bool broken = false;  // this process took a "broken" fault
     const std::optional<TestFault> f = testFaultAsked();
@@ -34,6 +40,14 @@ void injectTestFault(const std::string& script, Image& picture, std::string& fai
     if (f->kind == "reset") failure = "the GPU was reset by another process while this script drew (GLIMMER_TEST_FAULT)";
     else if (f->kind == "zeros" || f->kind == "broken") std::fill(picture.u8.begin(), picture.u8.end(), std::uint8_t(0));
     broken = broken || f->kind == "broken";
+}
+
+}  // namespace
+
+std::string pictureFailure(const Renderer& renderer, const std::string& script, Image& picture, std::string* refused) {
+    std::string failure = renderer.contextFailure(refused);
+    injectTestFault(script, picture, failure);
+    return failure;
 }
 
 }  // namespace glimmer

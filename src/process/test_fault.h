@@ -18,6 +18,8 @@
 
 namespace glimmer {
 
+class Renderer;
+
 struct TestFault {
     std::string kind, part, marker;
 };
@@ -28,8 +30,10 @@ std::optional<TestFault> testFaultAsked();
 // Whether this drawing takes the fault (MARKER: the first to make the file).
 bool takesTestFault(const TestFault& f);
 
-// A "reset" or "zeros" fault for `script`'s picture, if asked: `failure`
-// set as contextFailure would, or `picture` zeroed.
-void injectTestFault(const std::string& script, Image& picture, std::string& failure);
+// After `picture` of `script` was read: why the context failed (its
+// contextFailure, gl/renderer.h), with a test's fault put in; "" when it did
+// not. The one question every reader of a picture asks (render, render
+// --watch, batch's workers).
+std::string pictureFailure(const Renderer& renderer, const std::string& script, Image& picture, std::string* refused);
 
 }  // namespace glimmer
